@@ -1,0 +1,77 @@
+// The catalogue: every table brdflut knows, with its axes, channels,
+// defaults and the evaluator that fills a texel.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "brdflut/axis.h"
+#include "brdflut/table.h"
+
+namespace brdflut {
+
+// A model option a table accepts (set with a command-line flag of the same name).
+struct ModelOption {
+    std::string name;                  // e.g. "visibility"
+    std::string help;
+    std::string default_value;
+    std::vector<std::string> allowed;  // empty: free form, checked by the table
+};
+
+// The default of an axis and the values the model accepts on it.
+struct AxisSpec {
+    Axis axis;            // default range, count, placement and warp
+    double domain_min;    // smallest value the model accepts
+    double domain_max;    // largest value the model accepts
+    std::string meaning;  // e.g. "cos(theta_o), cosine of the view angle"
+};
+
+// Values and estimated absolute errors of one texel's channels.
+struct TexelValue {
+    std::array<double, 4> value{};
+    std::array<double, 4> error{};
+};
+
+class TexelEvaluator {
+public:
+    virtual ~TexelEvaluator() = default;
+    // coords: one value per axis (x, y[, z]); texel: the linear index, which
+    // seeds Monte Carlo so results do not depend on scheduling. Never throws.
+    virtual TexelValue evaluate(const double* coords, std::uint64_t texel) const = 0;
+};
+
+struct PreparedTable {
+    std::unique_ptr<TexelEvaluator> evaluator;
+    nlohmann::json model;   // every parameter that changes the values
+    nlohmann::json method;  // the rule and its settings
+};
+
+struct TableDefinition {
+    std::string id;
+    std::string description;  // one line
+    std::vector<AxisSpec> axes;
+    std::vector<std::string> channels;  // meaning of R, G, B, A in order
+    std::vector<ModelOption> options;
+    bool supports_monte_carlo = false;
+    // Validates settings (throws brdflut::Error) and builds the evaluator.
+    std::function<PreparedTable(const TableSettings&)> prepare;
+};
+
+const std::vector<TableDefinition>& catalogue();
+// Throws brdflut::Error listing the known ids when id is unknown.
+const TableDefinition& find_table(const std::string& id);
+
+// The defaults of a table: its axes and the default of every option.
+TableSettings default_settings(const TableDefinition& def);
+
+// Checks axis names, counts, ranges against the domain, and option values;
+// throws brdflut::Error naming the option, the value and what is allowed.
+void validate_settings(const TableDefinition& def, const TableSettings& s);
+
+}  // namespace brdflut

@@ -1,0 +1,33 @@
+// OpenEXR input and output of tables. Channels are named R, G, B, A (as many
+// as the table has); the string attribute `brdflut` holds the metadata JSON.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "brdflut/table.h"
+
+namespace brdflut {
+
+inline constexpr const char* kMetadataAttribute = "brdflut";
+
+// Writes atomically: a temporary file in the destination folder is renamed
+// into place only when complete. Refuses NaN or infinite values.
+// Throws brdflut::RuntimeError on failure.
+void write_exr(const std::string& path, const Table& table, PixelType pixel);
+
+struct ExrImage {
+    int width = 0, height = 0;
+    std::vector<std::string> channel_names;  // in file order (R, G, B, A first)
+    std::vector<double> pixels;              // row-major, channels interleaved
+    PixelType pixel = PixelType::float32;
+    bool has_metadata = false;
+    nlohmann::json metadata;
+};
+
+// Throws brdflut::RuntimeError naming the file on any failure.
+ExrImage read_exr(const std::string& path);
+
+}  // namespace brdflut

@@ -1,0 +1,72 @@
+// GGX (Trowbridge-Reitz) microfacet distribution and Smith masking.
+//
+// Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces"
+// Heitz 2014, "Understanding the Masking-Shadowing Function in
+//             Microfacet-Based BRDFs"
+// Heitz 2018, "Sampling the GGX Distribution of Visible Normals"
+//
+// Conventions: isotropic, alpha is the GGX width (alpha = roughness^2 when
+// roughness is the perceptual roughness used by engines), directions are in
+// the shading frame with the normal along +z.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "brdflut/math.h"
+
+namespace brdflut {
+
+// Engines expose a perceptual roughness r and use alpha = r^2.
+constexpr double alpha_from_perceptual(double roughness) { return roughness * roughness; }
+
+// Which shadowing-masking term a microfacet BRDF uses.
+enum class Visibility {
+    height_correlated,  // G2 = 1 / (1 + Lambda(o) + Lambda(i))       (Heitz 2014)
+    separable,          // G2 = G1(o) G1(i)
+};
+std::string_view to_string(Visibility v);
+Visibility visibility_from_string(std::string_view s);  // throws brdflut::Error
+
+struct Ggx {
+    double alpha;
+
+    // Normal distribution D(m), density of microfacet normals per unit
+    // projected area: integral of D(m) cos(theta_m) dw_m = 1.
+    double D(double cos_theta_m) const {
+        if (cos_theta_m <= 0.0) return 0.0;
+        const double a2 = alpha * alpha;
+        const double c2 = cos_theta_m * cos_theta_m;
+        const double t = c2 * (a2 - 1.0) + 1.0;
+        return a2 / (kPi * t * t);
+    }
+
+    // Smith Lambda for a direction at cos(theta) = mu:
+    // Lambda = (-1 + sqrt(1 + alpha^2 tan^2(theta))) / 2, written as
+    // (sqrt(mu^2 + alpha^2 (1 - mu^2)) - mu) / (2 mu), which stays accurate
+    // for small alpha and grazing mu.
+    double lambda(double mu) const {
+        if (mu <= 0.0) return HUGE_VAL;
+        const double mu2 = mu * mu;
+        const double r = std::sqrt(mu2 + alpha * alpha * (1.0 - mu2));
+        // r - mu = alpha^2 (1 - mu^2) / (r + mu) avoids cancellation.
+        return alpha * alpha * (1.0 - mu2) / ((r + mu) * 2.0 * mu);
+    }
+
+    double G1(double mu) const {
+        if (mu <= 0.0) return 0.0;
+        return 1.0 / (1.0 + lambda(mu));
+    }
+
+    double G2(double mu_o, double mu_i, Visibility vis) const {
+        if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
+        if (vis == Visibility::separable) return G1(mu_o) * G1(mu_i);
+        return 1.0 / (1.0 + lambda(mu_o) + lambda(mu_i));
+    }
+
+    // Visible normal for direction wo (wo.z > 0) from two uniform numbers
+    // (Heitz 2018). Density: G1(wo) max(0, wo.m) D(m) / wo.z.
+    Vec3 sample_visible_normal(const Vec3& wo, double u1, double u2) const;
+};
+
+}  // namespace brdflut

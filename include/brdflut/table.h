@@ -1,0 +1,67 @@
+// A generated table: its axes, channels and values, and the settings that
+// produced it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "brdflut/axis.h"
+
+namespace brdflut {
+
+enum class Method { quadrature, monte_carlo };
+std::string_view to_string(Method m);
+Method method_from_string(std::string_view s);  // throws brdflut::Error
+
+// What a user may change about a table. Start from default_settings(def).
+struct TableSettings {
+    std::vector<Axis> axes;                     // x, y[, z]
+    std::map<std::string, std::string> params;  // model options, e.g. visibility
+    Method method = Method::quadrature;
+    long long samples = 4096;                   // per texel, Monte Carlo only
+    std::uint64_t seed = 1;                     // Monte Carlo only
+};
+
+struct Table {
+    std::string id;
+    std::vector<Axis> axes;
+    std::vector<std::string> channels;  // meaning of R, G, B, A in order (1 to 4)
+    nlohmann::json model;               // every parameter that changes the values
+    nlohmann::json method;              // integration rule and its settings
+    // Texel values, x fastest, then y, then z; channels interleaved.
+    std::vector<double> values;
+    // Estimated absolute integration error of each value (same layout).
+    std::vector<double> errors;
+
+    int width() const { return axes.empty() ? 0 : axes[0].count; }
+    // Rows of the image: the second axis, with z slices stacked vertically.
+    int height() const;
+    int channel_count() const { return static_cast<int>(channels.size()); }
+    std::size_t texel_count() const;
+    double at(std::size_t texel, int channel) const {
+        return values[texel * channels.size() + static_cast<std::size_t>(channel)];
+    }
+};
+
+enum class PixelType { half, float32 };
+std::string_view to_string(PixelType p);
+PixelType pixel_type_from_string(std::string_view s);  // throws brdflut::Error
+
+// Rounds a value to the storage type and back.
+double round_to_storage(double v, PixelType p);
+
+// Largest estimated absolute error of any stored value: integration error
+// plus the rounding of each value to the storage type.
+double error_bound(const Table& t, PixelType p);
+
+// The `brdflut` metadata of a table stored with pixel type p.
+nlohmann::json metadata_json(const Table& t, PixelType p);
+
+// Rebuilds axes from metadata; throws brdflut::RuntimeError on malformed input.
+std::vector<Axis> axes_from_json(const nlohmann::json& axes);
+
+}  // namespace brdflut

@@ -1,0 +1,120 @@
+#include "brdflut/catalogue.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "brdflut/error.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+
+const std::vector<TableDefinition>& catalogue() {
+    static const std::vector<TableDefinition> all = [] {
+        std::vector<TableDefinition> v;
+        register_ggx_tables(v);
+        return v;
+    }();
+    return all;
+}
+
+const TableDefinition& find_table(const std::string& id) {
+    for (const TableDefinition& d : catalogue())
+        if (d.id == id) return d;
+    std::string known;
+    for (const TableDefinition& d : catalogue()) known += (known.empty() ? "" : ", ") + d.id;
+    throw Error("table '" + id + "' is not known; allowed: " + known);
+}
+
+TableSettings default_settings(const TableDefinition& def) {
+    TableSettings s;
+    for (const AxisSpec& a : def.axes) s.axes.push_back(a.axis);
+    for (const ModelOption& o : def.options) s.params[o.name] = o.default_value;
+    return s;
+}
+
+namespace {
+std::string format_number(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+}  // namespace
+
+void validate_settings(const TableDefinition& def, const TableSettings& s) {
+    if (s.axes.size() != def.axes.size())
+        throw Error("table '" + def.id + "' has " + std::to_string(def.axes.size()) +
+                    " axes; got settings for " + std::to_string(s.axes.size()));
+    long long texels = 1;
+    for (std::size_t i = 0; i < s.axes.size(); ++i) {
+        const Axis& a = s.axes[i];
+        const AxisSpec& spec = def.axes[i];
+        if (a.name != spec.axis.name)
+            throw Error("table '" + def.id + "': axis " + std::to_string(i) + " is '" +
+                        spec.axis.name + "', not '" + a.name + "'");
+        a.validate();
+        if (a.min < spec.domain_min || a.max > spec.domain_max)
+            throw Error("table '" + def.id + "': axis '" + a.name + "' range " +
+                        format_number(a.min) + ":" + format_number(a.max) +
+                        " is outside the model's domain; allowed: within " +
+                        format_number(spec.domain_min) + ":" + format_number(spec.domain_max));
+        texels *= a.count;
+    }
+    if (texels > kMaxTexels)
+        throw Error("table '" + def.id + "': " + std::to_string(texels) +
+                    " texels is too many; allowed: at most " + std::to_string(kMaxTexels));
+    for (const auto& [name, value] : s.params) {
+        auto it = std::find_if(def.options.begin(), def.options.end(),
+                               [&](const ModelOption& o) { return o.name == name; });
+        if (it == def.options.end())
+            throw Error("table '" + def.id + "' has no option '" + name + "'");
+        if (!it->allowed.empty() &&
+            std::find(it->allowed.begin(), it->allowed.end(), value) == it->allowed.end()) {
+            std::string allowed;
+            for (const auto& v : it->allowed) allowed += (allowed.empty() ? "" : ", ") + v;
+            throw Error("--" + name + " '" + value + "' is not allowed for table '" + def.id +
+                        "'; allowed: " + allowed);
+        }
+    }
+    if (s.method == Method::monte_carlo && !def.supports_monte_carlo)
+        throw Error("table '" + def.id + "' has no Monte Carlo method; allowed: quadrature");
+    if (s.method == Method::monte_carlo && (s.samples < 1 || s.samples > (1LL << 32)))
+        throw Error("--samples " + std::to_string(s.samples) + " is out of range; allowed: 1 to " +
+                    std::to_string(1LL << 32));
+}
+
+namespace tables {
+
+AxisSpec cos_theta_axis(int count) {
+    return {Axis{"cos_theta", 0.0, 1.0, count, Placement::center, Warp::linear}, 0.0, 1.0,
+            "cos(theta_o): cosine of the angle between the view direction and the normal"};
+}
+
+AxisSpec alpha_axis(int count) {
+    return {Axis{"alpha", 0.0, 1.0, count, Placement::center, Warp::square}, 0.0, 1.0,
+            "GGX alpha; the square warp makes the rows linear in perceptual roughness "
+            "sqrt(alpha)"};
+}
+
+const std::string& param(const TableSettings& s, const std::string& name) {
+    auto it = s.params.find(name);
+    if (it == s.params.end()) throw Error("option '" + name + "' is missing");
+    return it->second;
+}
+
+nlohmann::json quadrature_method(const std::string& rule, double abs_tol) {
+    return {{"name", "quadrature"}, {"rule", rule}, {"abs_tolerance", abs_tol}};
+}
+
+nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s) {
+    return {{"name", "mc"},
+            {"sampler", sampler},
+            {"samples", s.samples},
+            {"seed", s.seed},
+            {"rng", "mt19937_64 seeded per texel with SplitMix64(seed, texel index)"},
+            {"error", "4 standard errors of the mean"}};
+}
+
+}  // namespace tables
+}  // namespace brdflut

@@ -1,0 +1,79 @@
+// The only place that runs texels in parallel. Each texel is written to its
+// own slot, so the values do not depend on scheduling or thread count.
+#include "brdflut/generate.h"
+
+#include <oneapi/tbb/blocked_range.h>
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/info.h>
+#include <oneapi/tbb/parallel_for.h>
+
+#include <atomic>
+#include <mutex>
+
+#include "brdflut/error.h"
+
+namespace brdflut {
+
+Table generate(const TableDefinition& def, const TableSettings& settings,
+               const GenerateOptions& options) {
+    validate_settings(def, settings);
+    if (options.threads < 0)
+        throw Error("--threads " + std::to_string(options.threads) +
+                    " is out of range; allowed: 0 (all) or more");
+    PreparedTable prepared = def.prepare(settings);
+
+    Table t;
+    t.id = def.id;
+    t.axes = settings.axes;
+    t.channels = def.channels;
+    t.model = prepared.model;
+    t.method = prepared.method;
+    const std::size_t texels = t.texel_count();
+    const std::size_t nc = t.channels.size();
+    t.values.assign(texels * nc, 0.0);
+    t.errors.assign(texels * nc, 0.0);
+
+    // Axis values of every index, computed once.
+    std::vector<std::vector<double>> axis_values;
+    for (const Axis& a : t.axes) {
+        std::vector<double> v(static_cast<std::size_t>(a.count));
+        for (int i = 0; i < a.count; ++i) v[static_cast<std::size_t>(i)] = a.value(i);
+        axis_values.push_back(std::move(v));
+    }
+
+    std::atomic<std::size_t> done{0};
+    std::mutex progress_mutex;
+    const TexelEvaluator& eval = *prepared.evaluator;
+    auto body = [&](const oneapi::tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+            double coords[3] = {0.0, 0.0, 0.0};
+            std::size_t rest = k;
+            for (std::size_t a = 0; a < axis_values.size(); ++a) {
+                const std::size_t n = axis_values[a].size();
+                coords[a] = axis_values[a][rest % n];
+                rest /= n;
+            }
+            const TexelValue v = eval.evaluate(coords, k);
+            for (std::size_t c = 0; c < nc; ++c) {
+                t.values[k * nc + c] = v.value[c];
+                t.errors[k * nc + c] = v.error[c];
+            }
+        }
+        const std::size_t now = done.fetch_add(r.size()) + r.size();
+        if (options.progress) {
+            std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
+            if (lock.owns_lock()) options.progress(now, texels);
+        }
+    };
+
+    const int threads =
+        options.threads > 0 ? options.threads
+                            : static_cast<int>(oneapi::tbb::info::default_concurrency());
+    oneapi::tbb::global_control limit(oneapi::tbb::global_control::max_allowed_parallelism,
+                                      static_cast<std::size_t>(threads));
+    oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, texels, 1), body);
+    if (options.progress) options.progress(texels, texels);
+    return t;
+}
+
+}  // namespace brdflut

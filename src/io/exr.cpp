@@ -1,0 +1,145 @@
+#include "brdflut/exr.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <Imath/half.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <unistd.h>
+
+#include "brdflut/error.h"
+#include "io/atomic_file.h"
+
+namespace brdflut {
+namespace {
+constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
+
+void check_finite(const Table& t) {
+    const std::size_t nc = t.channels.size();
+    for (std::size_t i = 0; i < t.values.size(); ++i) {
+        if (std::isfinite(t.values[i])) continue;
+        const std::size_t texel = i / nc;
+        std::ostringstream s;
+        s << "table '" << t.id << "': value " << t.values[i] << " at texel (";
+        std::size_t rest = texel;
+        for (std::size_t a = 0; a < t.axes.size(); ++a) {
+            const std::size_t n = static_cast<std::size_t>(t.axes[a].count);
+            s << (a ? ", " : "") << t.axes[a].name << " index " << rest % n << " = "
+              << t.axes[a].value(static_cast<int>(rest % n));
+            rest /= n;
+        }
+        s << "), channel " << kChannelNames[i % nc] << " is not finite; nothing was written";
+        throw RuntimeError(s.str());
+    }
+}
+}  // namespace
+
+void write_exr(const std::string& path, const Table& table, PixelType pixel) {
+    check_finite(table);
+    const int nc = table.channel_count();
+    if (nc < 1 || nc > 4) throw RuntimeError("table '" + table.id + "' must have 1 to 4 channels");
+    const int width = table.width(), height = table.height();
+    const std::string json = metadata_json(table, pixel).dump();
+
+    Imf::Header header(width, height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    header.insert(kMetadataAttribute, Imf::StringAttribute(json));
+    const Imf::PixelType type = pixel == PixelType::half ? Imf::HALF : Imf::FLOAT;
+    for (int c = 0; c < nc; ++c) header.channels().insert(kChannelNames[c], Imf::Channel(type));
+
+    const std::size_t n = table.values.size();
+    std::vector<float> f32;
+    std::vector<Imath::half> f16;
+    Imf::FrameBuffer fb;
+    if (pixel == PixelType::half) {
+        f16.resize(n);
+        for (std::size_t i = 0; i < n; ++i) f16[i] = Imath::half(static_cast<float>(table.values[i]));
+    } else {
+        f32.resize(n);
+        for (std::size_t i = 0; i < n; ++i) f32[i] = static_cast<float>(table.values[i]);
+    }
+    const std::size_t elem = pixel == PixelType::half ? sizeof(Imath::half) : sizeof(float);
+    char* base = pixel == PixelType::half ? reinterpret_cast<char*>(f16.data())
+                                          : reinterpret_cast<char*>(f32.data());
+    for (int c = 0; c < nc; ++c) {
+        fb.insert(kChannelNames[c],
+                  Imf::Slice(type, base + static_cast<std::size_t>(c) * elem,
+                             elem * static_cast<std::size_t>(nc),
+                             elem * static_cast<std::size_t>(nc) * static_cast<std::size_t>(width)));
+    }
+
+    AtomicFile file(path);
+    try {
+        Imf::OutputFile out(file.temp_path().c_str(), header);
+        out.setFrameBuffer(fb);
+        out.writePixels(height);
+    } catch (const std::exception& e) {
+        throw RuntimeError("cannot write '" + path + "': " + e.what());
+    }
+    file.commit();
+}
+
+ExrImage read_exr(const std::string& path) {
+    ExrImage img;
+    try {
+        if (!std::filesystem::is_regular_file(path))
+            throw RuntimeError("cannot read '" + path + "': no such file");
+        Imf::InputFile in(path.c_str());
+        const Imf::Header& h = in.header();
+        const Imath::Box2i dw = h.dataWindow();
+        const long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
+        const long long ht = static_cast<long long>(dw.max.y) - dw.min.y + 1;
+        if (w < 1 || ht < 1 || w * ht > (1LL << 28))
+            throw RuntimeError("cannot read '" + path + "': image size " + std::to_string(w) +
+                               "x" + std::to_string(ht) + " is not supported");
+        img.width = static_cast<int>(w);
+        img.height = static_cast<int>(ht);
+        // R, G, B, A first in that order, then any other channels by name.
+        std::vector<std::string> names;
+        for (const char* c : kChannelNames)
+            if (h.channels().findChannel(c)) names.push_back(c);
+        bool any_half = false;
+        for (auto it = h.channels().begin(); it != h.channels().end(); ++it) {
+            const std::string name = it.name();
+            if (it.channel().type == Imf::HALF) any_half = true;
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+        if (names.empty()) throw RuntimeError("cannot read '" + path + "': no channels");
+        img.channel_names = names;
+        img.pixel = any_half ? PixelType::half : PixelType::float32;
+        const std::size_t nc = names.size();
+        std::vector<float> buf(static_cast<std::size_t>(w * ht) * nc);
+        Imf::FrameBuffer fb;
+        // Slices are addressed relative to the data window origin.
+        char* origin = reinterpret_cast<char*>(buf.data()) -
+                       (static_cast<std::ptrdiff_t>(dw.min.x) +
+                        static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(w)) *
+                           static_cast<std::ptrdiff_t>(nc * sizeof(float));
+        for (std::size_t c = 0; c < nc; ++c)
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), nc * sizeof(float),
+                                           nc * sizeof(float) * static_cast<std::size_t>(w)));
+        in.setFrameBuffer(fb);
+        in.readPixels(dw.min.y, dw.max.y);
+        img.pixels.assign(buf.begin(), buf.end());
+        if (const auto* attr = h.findTypedAttribute<Imf::StringAttribute>(kMetadataAttribute)) {
+            img.metadata = nlohmann::json::parse(attr->value());
+            img.has_metadata = true;
+        }
+    } catch (const RuntimeError&) {
+        throw;
+    } catch (const nlohmann::json::exception& e) {
+        throw RuntimeError("cannot read '" + path + "': metadata is not valid JSON: " + e.what());
+    } catch (const std::exception& e) {
+        throw RuntimeError("cannot read '" + path + "': " + e.what());
+    }
+    return img;
+}
+
+}  // namespace brdflut

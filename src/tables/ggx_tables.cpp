@@ -1,0 +1,120 @@
+// GGX split-sum and Kulla-Conty albedo tables.
+//
+// Karis 2013, "Real Shading in Unreal Engine 4" (split-sum approximation)
+// Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks"
+#include <memory>
+
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/random.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+namespace {
+
+constexpr double kAbsTolerance = kGgxAbsTolerance;
+
+const char* kQuadratureRule =
+    "adaptive Gauss-Kronrod (7,15) over the half vector in x = ln(tan(theta_h)/alpha), "
+    "nested with phi clipped analytically to the upper hemisphere (trapezoidal on the "
+    "full circle); error per value: QUADPACK estimate";
+const char* kMcSampler = "GGX visible normals (Heitz 2018)";
+
+ModelOption visibility_option() {
+    return {"visibility",
+            "shadowing-masking term: height_correlated Smith G2 (Heitz 2014) or separable "
+            "G1(o) G1(i)",
+            "height_correlated",
+            {"height_correlated", "separable"}};
+}
+
+nlohmann::json ggx_model(Visibility vis) {
+    return {{"brdf", "GGX microfacet, single scattering"},
+            {"distribution", "ggx"},
+            {"visibility", to_string(vis)},
+            {"fresnel", "1"},
+            {"roughness", "alpha = perceptual_roughness^2"}};
+}
+
+enum class Kind { dfg, albedo, albedo_avg };
+
+class GgxEvaluator final : public TexelEvaluator {
+public:
+    GgxEvaluator(Kind kind, Visibility vis, const TableSettings& s)
+        : kind_(kind), vis_(vis), method_(s.method), samples_(s.samples), seed_(s.seed) {}
+
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        TexelValue out;
+        const bool mc = method_ == Method::monte_carlo;
+        const std::uint64_t seed = mix_seed(seed_, texel);
+        if (kind_ == Kind::albedo_avg) {
+            const double alpha = c[0];
+            const Estimate<1> e = mc ? ggx_albedo_average_mc(alpha, vis_, samples_, seed)
+                                     : ggx_albedo_average(alpha, vis_, kAbsTolerance);
+            out.value[0] = e.value[0];
+            out.error[0] = mc ? tables::kMcErrorSigmas * e.error[0] : e.error[0];
+            return out;
+        }
+        const double mu = c[0], alpha = c[1];
+        const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
+                                 : ggx_split_sum(mu, alpha, vis_, kAbsTolerance);
+        const double scale = mc ? tables::kMcErrorSigmas : 1.0;
+        if (kind_ == Kind::dfg) {
+            out.value = {e.value[0], e.value[1], 0.0, 0.0};
+            out.error = {scale * e.error[0], scale * e.error[1], 0.0, 0.0};
+        } else {
+            out.value[0] = e.value[0] + e.value[1];
+            // Monte Carlo: the standard error of the sum is at most the sum.
+            out.error[0] = scale * (e.error[0] + e.error[1]);
+        }
+        return out;
+    }
+
+private:
+    Kind kind_;
+    Visibility vis_;
+    Method method_;
+    long long samples_;
+    std::uint64_t seed_;
+};
+
+TableDefinition make(Kind kind, std::string id, std::string description,
+                     std::vector<AxisSpec> axes, std::vector<std::string> channels) {
+    TableDefinition d;
+    d.id = std::move(id);
+    d.description = std::move(description);
+    d.axes = std::move(axes);
+    d.channels = std::move(channels);
+    d.options = {visibility_option()};
+    d.supports_monte_carlo = true;
+    d.prepare = [kind](const TableSettings& s) {
+        const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
+        PreparedTable p;
+        p.evaluator = std::make_unique<GgxEvaluator>(kind, vis, s);
+        p.model = ggx_model(vis);
+        p.method = s.method == Method::monte_carlo
+                       ? tables::monte_carlo_method(kMcSampler, s)
+                       : tables::quadrature_method(kQuadratureRule, kAbsTolerance);
+        return p;
+    };
+    return d;
+}
+
+}  // namespace
+
+void register_ggx_tables(std::vector<TableDefinition>& out) {
+    using namespace tables;
+    out.push_back(make(Kind::dfg, "ggx_dfg",
+                       "GGX split-sum terms: specular = F0 * R + G (F = 1 inside the integral)",
+                       {cos_theta_axis(), alpha_axis()},
+                       {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i",
+                        "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i"}));
+    out.push_back(make(Kind::albedo, "ggx_albedo",
+                       "GGX directional albedo E(mu, alpha) = A + B (Kulla-Conty)",
+                       {cos_theta_axis(), alpha_axis()},
+                       {"E: integral of f cos(theta_i) dw_i with F = 1"}));
+    out.push_back(make(Kind::albedo_avg, "ggx_albedo_avg",
+                       "GGX average albedo E_avg(alpha) = 2 * integral of E(mu) mu dmu",
+                       {alpha_axis()}, {"E_avg: 2 * integral of E(mu) mu dmu"}));
+}
+
+}  // namespace brdflut

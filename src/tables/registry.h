@@ -1,0 +1,30 @@
+// Each family of tables adds its definitions to the catalogue here.
+#pragma once
+
+#include <vector>
+
+#include "brdflut/catalogue.h"
+
+namespace brdflut {
+
+void register_ggx_tables(std::vector<TableDefinition>& out);
+
+// Helpers shared by the table families.
+namespace tables {
+
+// The standard axes: view cosine, GGX alpha.
+AxisSpec cos_theta_axis(int count = 128);
+AxisSpec alpha_axis(int count = 128);
+
+// The option value of `name`, which validate_settings has checked.
+const std::string& param(const TableSettings& s, const std::string& name);
+
+// Method metadata of the adaptive quadrature and of the Monte Carlo route.
+nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
+nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);
+
+// Number of standard errors a Monte Carlo texel's error estimate spans.
+inline constexpr double kMcErrorSigmas = 4.0;
+
+}  // namespace tables
+}  // namespace brdflut

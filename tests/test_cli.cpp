@@ -1,0 +1,97 @@
+// The command-line tool, run as a user would.
+#include <gtest/gtest.h>
+
+#include "brdflut/exr.h"
+#include "test_support.h"
+
+using brdflut::test::run_cli;
+using brdflut::test::TempDir;
+
+TEST(Cli, ListShowsEveryTableWithAxesAndChannels) {
+    TempDir dir;
+    const auto r = run_cli("list", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const char* id : {"ggx_dfg", "ggx_albedo", "ggx_albedo_avg"})
+        EXPECT_NE(r.out.find(id), std::string::npos) << id;
+    EXPECT_NE(r.out.find("cos_theta [0, 1] 128 center linear"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("alpha [0, 1] 128 center square"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("R: A:"), std::string::npos) << r.out;
+}
+
+TEST(Cli, GenerateWritesTheTableIntoANewFolder) {
+    TempDir dir;
+    const auto r = run_cli("generate ggx_dfg ggx_albedo_avg --size 16 -o '" + (dir / "out/sub") + "' --visibility separable", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto img = brdflut::read_exr(dir / "out/sub/ggx_dfg.exr");
+    EXPECT_EQ(img.width, 16);
+    EXPECT_EQ(img.height, 16);
+    EXPECT_EQ(img.metadata.at("model").at("visibility"), "separable");
+    const auto avg = brdflut::read_exr(dir / "out/sub/ggx_albedo_avg.exr");
+    EXPECT_EQ(avg.width, 16);
+    EXPECT_EQ(avg.height, 1);
+    EXPECT_NE(r.out.find("ggx_dfg.exr"), std::string::npos);
+}
+
+TEST(Cli, GenerateWithHalfPixelsAndNonSquareSize) {
+    TempDir dir;
+    const auto r = run_cli("generate ggx_albedo --size 8x4 --pixel half -q -o '" + dir.path().string() + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    const auto img = brdflut::read_exr(dir / "ggx_albedo.exr");
+    EXPECT_EQ(img.width, 8);
+    EXPECT_EQ(img.height, 4);
+    EXPECT_EQ(img.pixel, brdflut::PixelType::half);
+}
+
+TEST(Cli, BadValuesGiveAClearErrorAndNonZeroExit) {
+    TempDir dir;
+    struct Case {
+        std::string args, expect;
+    };
+    const Case cases[] = {
+        {"generate ggx_dfg --size 0", "--size '0'"},
+        {"generate ggx_dfg --size abc", "allowed: N or NxM"},
+        {"generate ggx_dfg --size 8x8x8", "has 3 counts"},
+        {"generate nope", "table 'nope' is not known; allowed: ggx_dfg"},
+        {"generate ggx_dfg --pixel double", "allowed: half, float"},
+        {"generate ggx_dfg --visibility smooth", "allowed: height_correlated, separable"},
+        {"generate ggx_dfg --range alpha=0.5:0.2", "min must be below max"},
+        {"generate ggx_dfg --range alpha=0:2", "outside the model's domain"},
+        {"generate ggx_dfg --count eta=4", "no requested table has an axis named 'eta'"},
+        {"generate ggx_dfg --method mc --samples 0", "--samples 0"},
+        {"generate ggx_dfg --threads -1", "--threads -1"},
+        {"generate", "no table given"},
+        {"frobnicate", "frobnicate"},
+    };
+    for (const Case& c : cases) {
+        const auto r = run_cli(c.args + " -o '" + (dir / "o") + "'", dir);
+        EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+        EXPECT_NE(r.err.find(c.expect), std::string::npos) << c.args << "\n" << r.err;
+        EXPECT_EQ(r.err.rfind("brdflut: error: ", 0), 0u) << r.err;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "o/ggx_dfg.exr"));
+}
+
+TEST(Cli, HelpIsAvailableOnEverySubcommand) {
+    TempDir dir;
+    for (const char* sub : {"", "list ", "generate "}) {
+        const auto r = run_cli(std::string(sub) + "--help", dir);
+        EXPECT_EQ(r.exit_code, 0) << sub;
+        EXPECT_NE(r.out.find("--help"), std::string::npos) << sub;
+    }
+    const auto g = run_cli("generate --help", dir);
+    EXPECT_NE(g.out.find("--visibility"), std::string::npos);
+    EXPECT_NE(g.out.find("--method"), std::string::npos);
+}
+
+TEST(Cli, UnwritableOutputFolderIsARuntimeFailure) {
+    TempDir dir;
+    std::filesystem::create_directories(dir / "ro");
+    {
+        std::ofstream f(dir / "ro/file");
+    }
+    // A path whose parent is a regular file can never be created, even as root.
+    const auto r = run_cli("generate ggx_albedo_avg --size 4 -o '" + (dir / "ro/file/sub") + "'", dir);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("cannot create output folder"), std::string::npos) << r.err;
+}

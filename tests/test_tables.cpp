@@ -1,0 +1,174 @@
+// Generated tables: metadata, EXR round trip and thread independence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/error.h"
+#include "brdflut/exr.h"
+#include "brdflut/generate.h"
+#include "brdflut/ggx_integrals.h"
+#include "test_support.h"
+
+using namespace brdflut;
+using brdflut::test::TempDir;
+
+namespace {
+TableSettings small(const std::string& id, int n) {
+    TableSettings s = default_settings(find_table(id));
+    for (Axis& a : s.axes) a.count = n;
+    return s;
+}
+}  // namespace
+
+TEST(Catalogue, EveryTableIsWellFormed) {
+    ASSERT_FALSE(catalogue().empty());
+    for (const TableDefinition& d : catalogue()) {
+        EXPECT_FALSE(d.description.empty()) << d.id;
+        EXPECT_GE(d.channels.size(), 1u) << d.id;
+        EXPECT_LE(d.channels.size(), 4u) << d.id;
+        EXPECT_GE(d.axes.size(), 1u) << d.id;
+        EXPECT_LE(d.axes.size(), 3u) << d.id;
+        EXPECT_NO_THROW(validate_settings(d, default_settings(d))) << d.id;
+        EXPECT_TRUE(static_cast<bool>(d.prepare)) << d.id;
+    }
+}
+
+TEST(Catalogue, UnknownIdNamesTheKnownOnes) {
+    try {
+        find_table("ggx_nope");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("ggx_dfg"), std::string::npos);
+    }
+}
+
+TEST(Axis, PlacementAndWarpsFollowTheDocumentedFormulas) {
+    Axis a{"alpha", 0.0, 1.0, 4, Placement::center, Warp::square};
+    EXPECT_DOUBLE_EQ(a.value(0), 0.125 * 0.125);
+    EXPECT_DOUBLE_EQ(a.value(3), 0.875 * 0.875);
+    a.placement = Placement::endpoints;
+    EXPECT_DOUBLE_EQ(a.value(0), 0.0);
+    EXPECT_DOUBLE_EQ(a.value(3), 1.0);
+    a.warp = Warp::sqrt;
+    EXPECT_DOUBLE_EQ(a.value(1), std::sqrt(1.0 / 3.0));
+    Axis l{"radius", 1e-3, 64.0, 5, Placement::endpoints, Warp::log};
+    EXPECT_DOUBLE_EQ(l.value(0), 1e-3);
+    EXPECT_DOUBLE_EQ(l.value(4), 64.0);
+    EXPECT_NEAR(l.value(2), std::sqrt(1e-3 * 64.0), 1e-12);
+    EXPECT_NEAR(l.u_of_value(l.value(3)), l.u(3), 1e-14);
+}
+
+TEST(Axis, RejectsMalformedAxes) {
+    EXPECT_THROW((Axis{"alpha", 0.0, 1.0, 0, Placement::center, Warp::linear}.validate()), Error);
+    EXPECT_THROW((Axis{"alpha", 1.0, 1.0, 4, Placement::center, Warp::linear}.validate()), Error);
+    EXPECT_THROW((Axis{"alpha", 0.0, 1.0, 1, Placement::endpoints, Warp::linear}.validate()), Error);
+    EXPECT_THROW((Axis{"radius", 0.0, 1.0, 4, Placement::center, Warp::log}.validate()), Error);
+}
+
+TEST(Generate, ValuesMatchTheIntegralsAtTheAxisParameters) {
+    const Table t = generate(find_table("ggx_dfg"), small("ggx_dfg", 8));
+    ASSERT_EQ(t.values.size(), 8u * 8u * 2u);
+    for (int j = 0; j < 8; j += 3)
+        for (int i = 0; i < 8; i += 3) {
+            const double mu = (i + 0.5) / 8, alpha = std::pow((j + 0.5) / 8, 2);
+            const auto e = ggx_split_sum(mu, alpha, Visibility::height_correlated);
+            EXPECT_DOUBLE_EQ(t.at(static_cast<std::size_t>(j * 8 + i), 0), e.value[0]);
+            EXPECT_DOUBLE_EQ(t.at(static_cast<std::size_t>(j * 8 + i), 1), e.value[1]);
+        }
+}
+
+TEST(Generate, AlbedoIsTheSumOfTheSplitSumChannels) {
+    const Table dfg = generate(find_table("ggx_dfg"), small("ggx_dfg", 6));
+    const Table e = generate(find_table("ggx_albedo"), small("ggx_albedo", 6));
+    for (std::size_t k = 0; k < e.texel_count(); ++k)
+        EXPECT_DOUBLE_EQ(e.at(k, 0), dfg.at(k, 0) + dfg.at(k, 1));
+}
+
+TEST(Generate, SameBytesForAnyThreadCount) {
+    TempDir dir;
+    for (const std::string id : {"ggx_dfg", "ggx_albedo_avg"}) {
+        TableSettings s = small(id, 16);
+        GenerateOptions one, two, all;
+        one.threads = 1;
+        two.threads = 2;
+        write_exr(dir / (id + "1.exr"), generate(find_table(id), s, one), PixelType::float32);
+        write_exr(dir / (id + "2.exr"), generate(find_table(id), s, two), PixelType::float32);
+        write_exr(dir / (id + "0.exr"), generate(find_table(id), s, all), PixelType::float32);
+        const std::string a = test::read_file(dir / (id + "1.exr"));
+        EXPECT_FALSE(a.empty());
+        EXPECT_EQ(a, test::read_file(dir / (id + "2.exr"))) << id;
+        EXPECT_EQ(a, test::read_file(dir / (id + "0.exr"))) << id;
+    }
+}
+
+TEST(Exr, RoundTripKeepsValuesAndMetadataDescribesEveryTexel) {
+    TempDir dir;
+    TableSettings s = default_settings(find_table("ggx_dfg"));
+    s.axes[0].count = 12;
+    s.axes[1].count = 5;
+    s.axes[1].placement = Placement::endpoints;
+    s.params["visibility"] = "separable";
+    const Table t = generate(find_table("ggx_dfg"), s);
+    for (PixelType p : {PixelType::float32, PixelType::half}) {
+        const std::string path = dir / "t.exr";
+        write_exr(path, t, p);
+        const ExrImage img = read_exr(path);
+        ASSERT_EQ(img.width, 12);
+        ASSERT_EQ(img.height, 5);
+        ASSERT_EQ(img.channel_names, (std::vector<std::string>{"R", "G"}));
+        EXPECT_EQ(img.pixel, p);
+        ASSERT_TRUE(img.has_metadata);
+        const auto& m = img.metadata;
+        EXPECT_EQ(m.at("table"), "ggx_dfg");
+        EXPECT_EQ(m.at("generator").at("name"), "brdflut");
+        EXPECT_EQ(m.at("model").at("visibility"), "separable");
+        EXPECT_EQ(m.at("channels").size(), 2u);
+        EXPECT_TRUE(m.at("method").contains("rule"));
+        const double bound = m.at("error_bound").get<double>();
+        EXPECT_GT(bound, 0.0);
+        EXPECT_LT(bound, p == PixelType::half ? 1e-3 : 1e-7);
+        const std::vector<Axis> axes = axes_from_json(m.at("axes"));
+        ASSERT_EQ(axes.size(), 2u);
+        // The metadata alone gives the parameters of every texel.
+        for (int j = 0; j < 5; ++j)
+            for (int i = 0; i < 12; ++i) {
+                EXPECT_EQ(axes[0].value(i), t.axes[0].value(i));
+                EXPECT_EQ(axes[1].value(j), t.axes[1].value(j));
+                for (int c = 0; c < 2; ++c) {
+                    const std::size_t k = static_cast<std::size_t>(j * 12 + i);
+                    const double stored = img.pixels[k * 2 + static_cast<std::size_t>(c)];
+                    EXPECT_EQ(stored, round_to_storage(t.at(k, c), p));
+                    EXPECT_LE(std::abs(stored - t.at(k, c)), bound);
+                }
+            }
+        EXPECT_EQ(axes[1].value(0), 0.0);
+        EXPECT_EQ(axes[1].value(4), 1.0);
+    }
+}
+
+TEST(Exr, RefusesNonFiniteValuesAndNamesTheTexel) {
+    TempDir dir;
+    Table t = generate(find_table("ggx_albedo"), small("ggx_albedo", 3));
+    t.values[4] = std::nan("");
+    try {
+        write_exr(dir / "bad.exr", t, PixelType::float32);
+        FAIL() << "expected an error";
+    } catch (const RuntimeError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("ggx_albedo"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("cos_theta index 1"), std::string::npos) << msg;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.exr"));
+    EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(Exr, ReadingAMissingOrCorruptFileIsAClearError) {
+    TempDir dir;
+    EXPECT_THROW(read_exr(dir / "missing.exr"), RuntimeError);
+    {
+        std::ofstream f(dir / "junk.exr", std::ios::binary);
+        f << "this is not an EXR file";
+    }
+    EXPECT_THROW(read_exr(dir / "junk.exr"), RuntimeError);
+}
