@@ -58,6 +58,7 @@ nlohmann::json metadata_json(const Table& t, PixelType p) {
     j["table"] = t.id;
     j["generator"] = {{"name", kName}, {"version", kVersion}};
     j["model"] = t.model;
+    j["options"] = t.options;
     nlohmann::json axes = nlohmann::json::array();
     for (const Axis& a : t.axes) {
         axes.push_back({{"name", a.name},

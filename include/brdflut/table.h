@@ -32,6 +32,7 @@ struct Table {
     std::vector<std::string> channels;  // meaning of R, G, B, A in order (1 to 4)
     nlohmann::json model;               // every parameter that changes the values
     nlohmann::json method;              // integration rule and its settings
+    std::map<std::string, std::string> options;  // the model options it was made with
     // Texel values, x fastest, then y, then z; channels interleaved.
     std::vector<double> values;
     // Estimated absolute integration error of each value (same layout).

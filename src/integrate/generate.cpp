@@ -28,6 +28,7 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     t.channels = def.channels;
     t.model = prepared.model;
     t.method = prepared.method;
+    t.options = settings.params;
     const std::size_t texels = t.texel_count();
     const std::size_t nc = t.channels.size();
     t.values.assign(texels * nc, 0.0);
