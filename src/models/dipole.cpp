@@ -159,8 +159,11 @@ double dipole_albedo_from_reflectance(double R, double A, double* error) {
 }
 
 // Jensen, Marschner, Levoy and Hanrahan 2001, Figure 5: reduced scattering
-// sigma_s' and absorption sigma_a in 1/mm for the R, G, B channels, measured
-// with relative index of refraction 1.3.
+// sigma_s' and absorption sigma_a in 1/mm for the R, G, B channels. The index
+// is not part of the entry: the tables take it from --eta (default 1.3).
+// pbrt's copy of this table pairs marble with 1.5, which reproduces the
+// reflectance usually quoted for marble (0.83, 0.79, 0.75) where 1.3 gives
+// (0.87, 0.83, 0.80).
 const std::vector<MeasuredMaterial>& measured_materials() {
     static const std::vector<MeasuredMaterial> all = {
         {"apple", {2.29, 2.39, 1.97}, {0.0030, 0.0034, 0.046}},
