@@ -1,9 +1,12 @@
 #include "brdflut/fresnel.h"
 
 #include <cmath>
+#include <complex>
+#include <string>
 
+#include "brdflut/error.h"
+#include "brdflut/fresnel_integrals.h"
 #include "brdflut/math.h"
-#include "brdflut/quadrature.h"
 
 namespace brdflut {
 
@@ -23,26 +26,66 @@ double fresnel_dielectric(double cos_i, double eta) {
 }
 
 double fresnel_dielectric_average(double eta) {
-    AdaptiveOptions opt;
-    opt.abs_tol = 1e-14;
-    opt.max_intervals = 400;
-    auto f = [&](double mu) { return std::array<double, 1>{2.0 * mu * fresnel_dielectric(mu, eta)}; };
-    if (eta >= 1.0) return integrate_adaptive<1>(f, 0.0, 1.0, opt).value[0];
-    // Below the critical cosine mu_c = sqrt(1 - eta^2) everything is reflected:
-    // 2 * integral of mu dmu over [0, mu_c] = mu_c^2. Above it F has a square
-    // root at mu_c; mu = mu_c + (1 - mu_c) s^2 makes the integrand smooth.
-    const double mu_c = std::sqrt(1.0 - eta * eta);
-    const double len = 1.0 - mu_c;
-    const double rest = integrate_adaptive<1>(
-                            [&](double s) {
-                                const double mu = mu_c + len * s * s;
-                                std::array<double, 1> v = f(mu);
-                                v[0] *= 2.0 * len * s;
-                                return v;
-                            },
-                            0.0, 1.0, opt)
-                            .value[0];
-    return mu_c * mu_c + rest;
+    return fresnel_dielectric_average_quadrature(eta, 1e-14).value[0];
+}
+
+// Closed form of 2 * integral of F(mu) mu dmu for n > 1, as tabulated in the
+// project's field notes (it follows from integrating Rs and Rp in sin^2).
+double fresnel_dielectric_average_closed_form(double eta) {
+    if (!(eta >= 1.0) || !std::isfinite(eta))
+        throw Error("fresnel_dielectric_average_closed_form: eta " + std::to_string(eta) +
+                    " is out of range; allowed: eta >= 1 (use F_avg(1/n) = 1 - (1 - F_avg(n)) / n^2 "
+                    "inside the denser medium)");
+    if (eta == 1.0) return 0.0;
+    const double n = eta, n2 = n * n, n4 = n2 * n2;
+    const double n2p1 = n2 + 1.0, n4m1 = n4 - 1.0;
+    return 0.5 + (n - 1.0) * (3.0 * n + 1.0) / (6.0 * sqr(n + 1.0)) +
+           n2 * sqr(n2 - 1.0) / (n2p1 * n2p1 * n2p1) * std::log((n - 1.0) / (n + 1.0)) -
+           2.0 * n2 * n * (n2 + 2.0 * n - 1.0) / (n2p1 * n4m1) +
+           8.0 * n4 * (n4 + 1.0) / (n2p1 * n4m1 * n4m1) * std::log(n);
+}
+
+double fresnel_conductor(double cos_i, double eta, double k) {
+    using C = std::complex<double>;
+    cos_i = clamp01(cos_i);
+    const double sin2_i = 1.0 - cos_i * cos_i;
+    const C n(eta, k);
+    const C n2 = n * n;
+    // w = n cos(theta_t) = sqrt(n^2 - sin^2(theta_i)). The principal root has
+    // Im(w) >= 0 (as Im(n^2) = 2 eta k >= 0): the transmitted wave decays
+    // into the conductor; for k = 0 beyond the critical angle w is imaginary
+    // and both |rs| and |rp| are 1.
+    const C w = std::sqrt(n2 - sin2_i);
+    const C rs_den = cos_i + w, rp_den = n2 * cos_i + w;
+    // Both vanish only at grazing incidence on an index-matched interface
+    // (eta = 1, k = 0), whose limit is 1 as for every interface at grazing.
+    if (rs_den == 0.0 || rp_den == 0.0) return 1.0;
+    const C rs = (cos_i - w) / rs_den;
+    const C rp = (n2 * cos_i - w) / rp_den;
+    return 0.5 * (std::norm(rs) + std::norm(rp));
+}
+
+double fresnel_conductor_approx(double cos_i, double eta, double k) {
+    cos_i = clamp01(cos_i);
+    const double c2 = cos_i * cos_i;
+    const double nk2 = eta * eta + k * k;
+    const double two_eta_c = 2.0 * eta * cos_i;
+    const double r_par2 = (nk2 * c2 - two_eta_c + 1.0) / (nk2 * c2 + two_eta_c + 1.0);
+    const double r_perp2 = (nk2 - two_eta_c + c2) / (nk2 + two_eta_c + c2);
+    return 0.5 * (r_par2 + r_perp2);
+}
+
+std::string_view to_string(FresnelForm f) { return f == FresnelForm::approx ? "approx" : "exact"; }
+
+FresnelForm fresnel_form_from_string(std::string_view s) {
+    if (s == "exact") return FresnelForm::exact;
+    if (s == "approx") return FresnelForm::approx;
+    throw Error("--fresnel '" + std::string(s) + "' is not known; allowed: exact, approx");
+}
+
+double fresnel_conductor(double cos_i, double eta, double k, FresnelForm form) {
+    return form == FresnelForm::approx ? fresnel_conductor_approx(cos_i, eta, k)
+                                       : fresnel_conductor(cos_i, eta, k);
 }
 
 }  // namespace brdflut

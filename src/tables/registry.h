@@ -8,6 +8,7 @@
 namespace brdflut {
 
 void register_ggx_tables(std::vector<TableDefinition>& out);
+void register_fresnel_tables(std::vector<TableDefinition>& out);
 void register_dipole_tables(std::vector<TableDefinition>& out);
 
 // Helpers shared by the table families.
