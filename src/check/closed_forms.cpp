@@ -5,6 +5,11 @@
 #include <map>
 #include <sstream>
 
+#include "brdflut/conductor_presets.h"
+#include "brdflut/dipole.h"
+#include "brdflut/dipole_integrals.h"
+#include "brdflut/fresnel.h"
+#include "brdflut/math.h"
 #include "brdflut/verify.h"
 
 namespace brdflut {
@@ -76,6 +81,106 @@ std::map<std::string, std::vector<ClosedFormCheck>> build() {
          [](const TexelEvaluator& e) {
              const std::vector<std::array<double, 1>> pts{{1.0}};
              return worst_over(e, pts, 0, [](const auto&) { return 4.0 / 3.0 * (1.0 - std::log(2.0)); });
+         }},
+    };
+
+    // Fresnel.
+    const std::vector<double> etas{1.0, 1.2, 1.33, 1.5, 2.0, 2.9};
+    m["fresnel_dielectric"] = {
+        {"F at normal incidence vs ((eta - 1)/(eta + 1))^2", 1e-15,
+         [etas](const TexelEvaluator& e) {
+             std::vector<std::array<double, 2>> pts;
+             for (double eta : etas) pts.push_back({1.0, eta});
+             return worst_over(e, pts, 0, [](const auto& p) { return sqr((p[1] - 1) / (p[1] + 1)); });
+         }},
+        {"F at grazing incidence vs 1", 1e-15,
+         [etas](const TexelEvaluator& e) {
+             std::vector<std::array<double, 2>> pts;
+             for (double eta : etas) pts.push_back({0.0, eta});
+             return worst_over(e, pts, 0, [](const auto& p) { return p[1] == 1.0 ? 0.0 : 1.0; });
+         }},
+    };
+    m["fresnel_dielectric_avg"] = {
+        {"F_avg(eta) vs the exact closed form (eta > 1)", 1e-10,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 1>> pts;
+             for (double eta : {1.01, 1.33, 1.5, 2.0, 2.99}) pts.push_back({eta});
+             return worst_over(e, pts, 0, [](const auto& p) { return fresnel_dielectric_average_closed_form(p[0]); });
+         }},
+        {"F_avg(1/eta) vs 1 - (1 - F_avg(eta))/eta^2", 1e-10,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 1>> pts;
+             for (double eta : {1.01, 1.33, 1.5, 2.0, 2.99}) pts.push_back({eta});
+             return worst_over(e, pts, 1, [](const auto& p) {
+                 return 1.0 - (1.0 - fresnel_dielectric_average_closed_form(p[0])) / (p[0] * p[0]);
+             });
+         }},
+    };
+    m["fresnel_conductor"] = {
+        {"F at normal incidence vs ((eta - 1)^2 + k^2)/((eta + 1)^2 + k^2) (gold)", 1e-15,
+         [](const TexelEvaluator& e) {
+             const ConductorPreset& gold = conductor_preset("gold");
+             Result r{0.0, ""};
+             const double mu = 1.0;
+             const TexelValue v = e.evaluate(&mu, 0);
+             for (int c = 0; c < 3; ++c) {
+                 const double eta = gold.eta[static_cast<std::size_t>(c)], k = gold.k[static_cast<std::size_t>(c)];
+                 const double want = (sqr(eta - 1) + k * k) / (sqr(eta + 1) + k * k);
+                 const double err = std::abs(v.value[static_cast<std::size_t>(c)] - want);
+                 if (err >= r.first) r = {err, std::string("channel ") + "RGB"[c]};
+             }
+             return r;
+         }},
+    };
+    m["fresnel_conductor_avg"] = {
+        {"F_avg(eta, k = 0) vs the dielectric closed form", 1e-9,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 2>> pts;
+             for (double eta : {1.2, 1.5, 2.0, 3.5}) pts.push_back({eta, 0.0});
+             return worst_over(e, pts, 0, [](const auto& p) { return fresnel_dielectric_average_closed_form(p[0]); });
+         }},
+    };
+
+    // Dipole (default eta 1.3, Egan-Hilgeman F_dr).
+    const double A = dipole_boundary_term(diffuse_fresnel_reflectance(1.3, DiffuseFresnel::fit));
+    const std::vector<double> albedos{0.0, 0.01, 0.3, 0.7, 0.95, 0.999, 1.0};
+    m["dipole_total"] = {
+        {"total vs the numerical integral of 2 pi r R_d(r)", 1e-9,
+         [A, albedos](const TexelEvaluator& e) {
+             std::vector<std::array<double, 1>> pts;
+             for (double a : albedos) pts.push_back({a});
+             return worst_over(e, pts, 0, [A](const auto& p) {
+                 return dipole_reflectance_quadrature(Dipole::from_albedo(p[0], A), HUGE_VAL, 1e-12).value[0];
+             });
+         }},
+    };
+    m["dipole_albedo_inverse"] = {
+        {"total(inverse(R)) vs R", 1e-12,
+         [A](const TexelEvaluator& e) {
+             Result r{0.0, ""};
+             for (double R : {0.0, 0.05, 0.3, 0.6, 0.9, 0.999}) {
+                 const TexelValue v = e.evaluate(&R, 0);
+                 const double err = std::abs(dipole_total_reflectance(v.value[0], A) - R);
+                 if (err >= r.first) r = {err, "at reflectance " + std::to_string(R)};
+             }
+             return r;
+         }},
+    };
+    m["dipole_profile"] = {
+        {"CDF x total vs the numerical integral of 2 pi r R_d over [0, r]", 1e-9,
+         [A](const TexelEvaluator& e) {
+             Result r{0.0, ""};
+             for (double a : {0.1, 0.5, 0.9, 1.0})
+                 for (double radius : {1e-3, 0.1, 1.0, 10.0, 64.0}) {
+                     const double c[2] = {radius, a};
+                     const TexelValue v = e.evaluate(c, 0);
+                     const Dipole d = Dipole::from_albedo(a, A);
+                     const double want = dipole_reflectance_quadrature(d, radius, 1e-13).value[0];
+                     const double err = std::abs(v.value[1] * d.total_reflectance() - want);
+                     if (err >= r.first)
+                         r = {err, "at radius " + std::to_string(radius) + ", albedo " + std::to_string(a)};
+                 }
+             return r;
          }},
     };
     return m;

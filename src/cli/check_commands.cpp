@@ -1,0 +1,228 @@
+// verify, compare, inspect and sample: the checking side of the tool.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "brdflut/error.h"
+#include "brdflut/exr.h"
+#include "brdflut/lut.h"
+#include "brdflut/verify.h"
+#include "cli/commands.h"
+
+namespace brdflut::cli {
+namespace {
+
+std::string sci(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2e", v);
+    return buf;
+}
+
+std::string axis_line(const Axis& a) {
+    std::ostringstream s;
+    s << a.name << " [" << a.min << ", " << a.max << "] " << a.count << " " << to_string(a.placement) << " "
+      << to_string(a.warp);
+    return s.str();
+}
+
+struct Described {
+    ExrImage image;
+    LutDescription lut;
+    bool from_metadata = false;
+};
+
+Described describe(const DescribeArgs& a) {
+    Described d;
+    d.image = read_exr(a.file);
+    if (a.as.empty()) {
+        if (!a.table.size.empty() || !a.table.ranges.empty() || !a.table.counts.empty() ||
+            !a.table.placements.empty() || !a.table.warps.empty() || !a.table.params.empty())
+            throw Error("axis and model options describe a foreign file and need --as <table id>");
+        d.lut = describe_from_metadata(d.image, a.file);
+        d.from_metadata = true;
+    } else {
+        const TableDefinition& def = find_table(a.as);
+        TableArgs t = a.table;
+        if (t.size.empty()) {
+            // Default grid: the image's own size.
+            if (def.axes.size() == 1) {
+                if (d.image.height != 1)
+                    throw RuntimeError("'" + a.file + "' has " + std::to_string(d.image.height) +
+                                       " rows but table '" + def.id + "' is 1-D");
+                t.size = std::to_string(d.image.width);
+            } else if (def.axes.size() == 2) {
+                t.size = std::to_string(d.image.width) + "x" + std::to_string(d.image.height);
+            }
+        }
+        std::set<std::string> used;
+        d.lut.def = &def;
+        d.lut.settings = settings_for(def, t, used);
+        check_all_used(t, used);
+        validate_settings(def, d.lut.settings);
+        const std::size_t n = std::min(def.channels.size(), d.image.channel_names.size());
+        for (std::size_t c = 0; c < n; ++c) d.lut.channel_map.push_back({static_cast<int>(c)});
+        d.lut.flip.assign(def.axes.size(), false);
+    }
+    if (!a.channels.empty())
+        d.lut.channel_map = parse_channel_map(a.channels, static_cast<int>(d.lut.def->channels.size()));
+    for (const std::string& name : a.flips) {
+        bool found = false;
+        for (std::size_t i = 0; i < d.lut.settings.axes.size(); ++i)
+            if (d.lut.settings.axes[i].name == name) {
+                d.lut.flip[i] = true;
+                found = true;
+            }
+        if (!found) throw Error("--flip '" + name + "': table '" + d.lut.def->id + "' has no axis of that name");
+    }
+    check_fits(d.image, d.lut, a.file);
+    return d;
+}
+
+}  // namespace
+
+int run_verify(const VerifyArgs& a) {
+    std::vector<const TableDefinition*> defs;
+    if (a.ids.empty())
+        for (const auto& d : catalogue()) defs.push_back(&d);
+    for (const auto& id : a.ids) defs.push_back(&find_table(id));
+    if (a.samples < 100 || a.samples > 100000000)
+        throw Error("--samples " + std::to_string(a.samples) + " is out of range; allowed: 100 to 100000000");
+    VerifyOptions opt;
+    opt.mc_samples = a.samples;
+    std::vector<CheckRow> rows;
+    bool ok = true;
+    if (!a.json)
+        std::printf("%-26s %-72s %-10s %-10s %s\n", "table", "check", "max error", "tolerance", "result");
+    for (const auto* d : defs) {
+        std::vector<CheckRow> r = verify_table(*d, opt);
+        if (r.empty()) r.push_back({d->id, "no independent check available", 0.0, 0.0, true, ""});
+        for (const CheckRow& row : r) {
+            ok = ok && row.pass;
+            if (!a.json) {
+                std::printf("%-26s %-72s %-10s %-10s %s%s\n", row.table.c_str(), row.check.c_str(),
+                            sci(row.max_error).c_str(), sci(row.tolerance).c_str(), row.pass ? "pass" : "FAIL",
+                            row.where.empty() ? "" : ("  (" + row.where + ")").c_str());
+                std::fflush(stdout);
+            }
+            rows.push_back(row);
+        }
+    }
+    if (a.json) {
+        nlohmann::json j = nlohmann::json::array();
+        for (const CheckRow& r : rows)
+            j.push_back({{"table", r.table}, {"check", r.check}, {"max_error", r.max_error},
+                         {"tolerance", r.tolerance}, {"pass", r.pass}, {"where", r.where}});
+        std::cout << nlohmann::json{{"pass", ok}, {"checks", j}}.dump(2) << "\n";
+    } else {
+        std::size_t failed = 0;
+        for (const CheckRow& r : rows) failed += r.pass ? 0 : 1;
+        std::printf("%zu checks: %zu passed, %zu failed\n", rows.size(), rows.size() - failed, failed);
+    }
+    return ok ? 0 : kExitFailure;
+}
+
+int run_compare(const CompareArgs& a) {
+    if (a.worst < 0 || a.worst > 100000)
+        throw Error("--worst " + std::to_string(a.worst) + " is out of range; allowed: 0 to 100000");
+    const Described d = describe(a.describe);
+    const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst));
+    const auto& axes = d.lut.settings.axes;
+    if (a.json) {
+        nlohmann::json j;
+        j["file"] = a.describe.file;
+        j["table"] = d.lut.def->id;
+        j["described_by"] = d.from_metadata ? "metadata" : "command line";
+        nlohmann::json ch = nlohmann::json::array();
+        for (const auto& c : rep.channels) ch.push_back({{"channel", c.channel}, {"max_abs_error", c.max_abs}, {"rms_error", c.rms}});
+        j["channels"] = ch;
+        nlohmann::json w = nlohmann::json::array();
+        for (const auto& t : rep.worst) {
+            nlohmann::json p;
+            for (std::size_t i = 0; i < axes.size(); ++i) p[axes[i].name] = t.params[i];
+            w.push_back({{"params", p}, {"channel", t.channel}, {"stored", t.stored}, {"exact", t.exact}, {"error", t.error}});
+        }
+        j["worst"] = w;
+        j["exact_error_bound"] = rep.exact_error_bound;
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    std::printf("file:  %s\ntable: %s (described by %s)\n", a.describe.file.c_str(), d.lut.def->id.c_str(),
+                d.from_metadata ? "its metadata" : "the command line");
+    for (const Axis& ax : axes) std::printf("axis:  %s\n", axis_line(ax).c_str());
+    std::printf("\n%-8s %-14s %-14s\n", "channel", "max |error|", "rms error");
+    for (const auto& c : rep.channels) std::printf("%-8s %-14s %-14s\n", c.channel.c_str(), sci(c.max_abs).c_str(), sci(c.rms).c_str());
+    if (!rep.worst.empty()) std::printf("\nworst texels:\n");
+    for (const auto& t : rep.worst) {
+        std::string where;
+        for (std::size_t i = 0; i < axes.size(); ++i) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "%s%s = %.6g", i ? ", " : "", axes[i].name.c_str(), t.params[i]);
+            where += buf;
+        }
+        std::printf("  %s, channel %s: stored %.9g, exact %.9g, error %+.3e\n", where.c_str(), t.channel.c_str(), t.stored,
+                    t.exact, t.error);
+    }
+    std::printf("\n(the exact values themselves are within %s)\n", sci(rep.exact_error_bound).c_str());
+    return 0;
+}
+
+int run_inspect(const std::string& file, bool json) {
+    const ExrImage img = read_exr(file);
+    const std::vector<ChannelStats> stats = channel_stats(img);
+    if (json) {
+        nlohmann::json j;
+        j["file"] = file;
+        j["width"] = img.width;
+        j["height"] = img.height;
+        j["pixel"] = to_string(img.pixel);
+        j["metadata"] = img.has_metadata ? img.metadata : nlohmann::json(nullptr);
+        nlohmann::json ch = nlohmann::json::array();
+        for (const auto& s : stats)
+            ch.push_back({{"channel", s.channel}, {"min", s.min}, {"max", s.max}, {"mean", s.mean}, {"non_finite", s.non_finite}});
+        j["channels"] = ch;
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    std::printf("file:   %s\nsize:   %dx%d, %zu channel(s), %s\n", file.c_str(), img.width, img.height,
+                img.channel_names.size(), std::string(to_string(img.pixel)).c_str());
+    std::printf("\n%-8s %-14s %-14s %-14s %s\n", "channel", "min", "max", "mean", "non-finite");
+    for (const auto& s : stats)
+        std::printf("%-8s %-14.7g %-14.7g %-14.7g %lld\n", s.channel.c_str(), s.min, s.max, s.mean, s.non_finite);
+    if (img.has_metadata) std::printf("\nmetadata (%s):\n%s\n", kMetadataAttribute, img.metadata.dump(2).c_str());
+    else std::printf("\nno brdflut metadata\n");
+    return 0;
+}
+
+int run_sample(const SampleArgs& a) {
+    const Described d = describe(a.describe);
+    const auto& axes = d.lut.settings.axes;
+    std::vector<double> params(axes.size(), std::nan(""));
+    std::stringstream ss(a.at);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        const auto [name, value] = split_assignment("--at", item);
+        bool found = false;
+        for (std::size_t i = 0; i < axes.size(); ++i)
+            if (axes[i].name == name) {
+                params[i] = parse_double("--at " + name, value);
+                found = true;
+            }
+        if (!found) {
+            std::string names;
+            for (const Axis& ax : axes) names += (names.empty() ? "" : ", ") + ax.name;
+            throw Error("--at '" + item + "': the table has no axis '" + name + "'; its axes: " + names);
+        }
+    }
+    for (std::size_t i = 0; i < axes.size(); ++i)
+        if (std::isnan(params[i])) throw Error("--at must give a value for axis '" + axes[i].name + "'");
+    for (std::size_t c = 0; c < d.image.channel_names.size(); ++c)
+        std::printf("%s = %.9g\n", d.image.channel_names[c].c_str(), sample_lut(d.image, d.lut, params, static_cast<int>(c)));
+    for (std::size_t i = 0; i < axes.size(); ++i)
+        if (params[i] < axes[i].min || params[i] > axes[i].max)
+            std::fprintf(stderr, "note: %s = %g is outside the table's range [%g, %g]; clamped to the edge\n",
+                         axes[i].name.c_str(), params[i], axes[i].min, axes[i].max);
+    return 0;
+}
+
+}  // namespace brdflut::cli

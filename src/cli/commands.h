@@ -1,0 +1,60 @@
+// The subcommands of the brdflut tool. Each returns the exit code; library
+// errors propagate as exceptions to main().
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+
+namespace brdflut::cli {
+
+int run_list();
+
+struct GenerateArgs {
+    std::vector<std::string> ids;
+    bool all = false;
+    std::string output = ".";
+    std::string pixel = "float";
+    int threads = 0;
+    bool quiet = false;
+    TableArgs table;
+};
+int run_generate(const GenerateArgs& a);
+
+struct VerifyArgs {
+    std::vector<std::string> ids;
+    bool json = false;
+    long long samples = 100000;
+};
+int run_verify(const VerifyArgs& a);
+
+// How a file is described: its metadata, or --as with the table options.
+struct DescribeArgs {
+    std::string file;
+    std::string as;
+    std::string channels;            // --channels R=G,G=R+G
+    std::vector<std::string> flips;  // --flip AXIS
+    TableArgs table;
+};
+
+struct CompareArgs {
+    DescribeArgs describe;
+    bool json = false;
+    int worst = 10;
+    int threads = 0;
+    std::string plot;
+};
+int run_compare(const CompareArgs& a);
+
+int run_inspect(const std::string& file, bool json);
+
+struct SampleArgs {
+    DescribeArgs describe;
+    std::string at;  // name=value,name=value
+};
+int run_sample(const SampleArgs& a);
+
+bool stderr_is_terminal();
+
+}  // namespace brdflut::cli

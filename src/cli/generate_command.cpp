@@ -1,0 +1,136 @@
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+#include "brdflut/error.h"
+#include "brdflut/exr.h"
+#include "brdflut/generate.h"
+#include "cli/commands.h"
+
+namespace brdflut::cli {
+namespace {
+
+std::string describe_axis(const Axis& a) {
+    std::ostringstream s;
+    s << a.name << " [" << a.min << ", " << a.max << "] " << a.count << " " << to_string(a.placement) << " "
+      << to_string(a.warp);
+    return s.str();
+}
+
+class ProgressBar {
+public:
+    ProgressBar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+    void update(std::size_t done, std::size_t total) {
+        if (!enabled_ || total == 0) return;
+        const int percent = static_cast<int>(100.0 * static_cast<double>(done) / static_cast<double>(total));
+        if (percent == last_) return;
+        last_ = percent;
+        const int width = 30, filled = percent * width / 100;
+        std::fprintf(stderr, "\r%-24s [%s%s] %3d%%", label_.c_str(),
+                     std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                     std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), percent);
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (enabled_ && last_ >= 0) std::fprintf(stderr, "\r%*s\r", 64, "");
+    }
+
+private:
+    std::string label_;
+    bool enabled_;
+    int last_ = -1;
+};
+
+}  // namespace
+
+bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+int run_list() {
+    static const char* kAxisLetters[3] = {"x", "y", "z"};
+    static const char* kChannels[4] = {"R", "G", "B", "A"};
+    for (const TableDefinition& d : catalogue()) {
+        std::cout << d.id << "\n  " << d.description << "\n";
+        for (std::size_t i = 0; i < d.axes.size(); ++i)
+            std::cout << "  " << kAxisLetters[i] << ": " << describe_axis(d.axes[i].axis) << "\n";
+        for (std::size_t c = 0; c < d.channels.size(); ++c)
+            std::cout << "  " << kChannels[c] << ": " << d.channels[c] << "\n";
+        for (const ModelOption& o : d.options) {
+            std::cout << "  --" << o.name;
+            if (!o.default_value.empty()) std::cout << " (default " << o.default_value;
+            else std::cout << " (no default";
+            if (!o.allowed.empty()) {
+                std::cout << "; allowed:";
+                for (const auto& v : o.allowed) std::cout << " " << v;
+            }
+            std::cout << ")\n";
+        }
+        std::cout << "  methods: quadrature" << (d.supports_monte_carlo ? ", mc" : "") << "\n\n";
+    }
+    return 0;
+}
+
+int run_generate(const GenerateArgs& a) {
+    std::vector<const TableDefinition*> defs;
+    if (a.all) {
+        if (!a.ids.empty()) throw Error("give table ids or --all, not both");
+        for (const auto& d : catalogue()) defs.push_back(&d);
+    } else {
+        if (a.ids.empty()) throw Error("no table given; name one or more ids (see 'brdflut list') or use --all");
+        for (const auto& id : a.ids) defs.push_back(&find_table(id));
+    }
+    const PixelType pixel = pixel_type_from_string(a.pixel);
+    if (a.threads < 0 || a.threads > 1024)
+        throw Error("--threads " + std::to_string(a.threads) + " is out of range; allowed: 0 (all cores) to 1024");
+    const Method method = method_from_string(a.table.method);
+    if (method == Method::monte_carlo && (a.table.samples < 1 || a.table.samples > (1LL << 32)))
+        throw Error("--samples " + std::to_string(a.table.samples) + " is out of range; allowed: 1 to " +
+                    std::to_string(1LL << 32));
+
+    // Build and check every table's settings before any work starts.
+    std::set<std::string> used;
+    std::vector<TableSettings> settings;
+    for (const auto* d : defs) {
+        if (method == Method::monte_carlo && !d->supports_monte_carlo && a.all) {
+            settings.push_back({});
+            continue;  // --all --method mc: tables without a Monte Carlo route are skipped below
+        }
+        settings.push_back(settings_for(*d, a.table, used));
+        validate_settings(*d, settings.back());
+    }
+    check_all_used(a.table, used);
+
+    std::error_code ec;
+    std::filesystem::create_directories(a.output, ec);
+    if (ec || !std::filesystem::is_directory(a.output))
+        throw RuntimeError("cannot create output folder '" + a.output + "'" + (ec ? ": " + ec.message() : ""));
+
+    const bool bar = !a.quiet && stderr_is_terminal();
+    for (std::size_t i = 0; i < defs.size(); ++i) {
+        if (settings[i].axes.empty()) {
+            if (!a.quiet) std::printf("skipped %s: it has no Monte Carlo method\n", defs[i]->id.c_str());
+            continue;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        ProgressBar progress(defs[i]->id, bar);
+        GenerateOptions opt;
+        opt.threads = a.threads;
+        opt.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+        const Table table = generate(*defs[i], settings[i], opt);
+        progress.finish();
+        const std::string path = (std::filesystem::path(a.output) / (table.id + ".exr")).string();
+        write_exr(path, table, pixel);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!a.quiet) {
+            std::printf("wrote %s: %dx%d, %d channel(s), %s, error bound %.2e, %.2f s\n", path.c_str(),
+                        table.width(), table.height(), table.channel_count(),
+                        std::string(to_string(pixel)).c_str(), error_bound(table, pixel), seconds);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
+
+}  // namespace brdflut::cli

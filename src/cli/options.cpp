@@ -1,0 +1,158 @@
+#include "cli/options.h"
+
+#include <cmath>
+
+#include "brdflut/error.h"
+
+namespace brdflut::cli {
+
+void add_table_options(CLI::App& app, TableArgs& a, bool methods) {
+    app.add_option("--size", a.size, "Grid size: N (every axis) or NxM (x by y)");
+    app.add_option("--range", a.ranges, "Axis range AXIS=MIN:MAX, e.g. alpha=0.01:1 (repeatable)");
+    app.add_option("--count", a.counts, "Axis count AXIS=N (repeatable)");
+    app.add_option("--placement", a.placements, "Axis placement AXIS=center|endpoints (repeatable)");
+    app.add_option("--warp", a.warps, "Axis warp AXIS=linear|square|sqrt|log (repeatable)");
+    if (methods) {
+        app.add_option("--method", a.method, "Integration: quadrature (deterministic) or mc (Monte Carlo)")
+            ->capture_default_str();
+        app.add_option("--samples", a.samples, "Samples per texel with --method mc")->capture_default_str();
+        app.add_option("--seed", a.seed, "Seed with --method mc")->capture_default_str();
+    }
+    // Model options of every table, each registered once.
+    std::map<std::string, std::string> help;
+    for (const TableDefinition& d : catalogue())
+        for (const ModelOption& o : d.options) {
+            std::string& h = help[o.name];
+            if (h.empty()) h = o.help;
+            h += (h.find(" [tables:") == std::string::npos ? " [tables: " : ", ") + d.id;
+        }
+    for (auto& [name, text] : help) app.add_option("--" + name, a.option_values[name], text + "]");
+}
+
+void collect_params(const CLI::App& app, TableArgs& a) {
+    for (const auto& [name, value] : a.option_values)
+        if (app.count("--" + name)) a.params[name] = value;
+}
+
+std::vector<int> parse_size(const std::string& s) {
+    std::vector<int> out;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t x = s.find('x', start);
+        const std::string part = s.substr(start, x == std::string::npos ? std::string::npos : x - start);
+        long long v = -1;
+        std::size_t used = 0;
+        try {
+            v = std::stoll(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (part.empty() || used != part.size() || v < 1 || v > kMaxAxisCount)
+            throw Error("--size '" + s + "' is not valid; allowed: N or NxM with each count from 1 to " +
+                        std::to_string(kMaxAxisCount));
+        out.push_back(static_cast<int>(v));
+        if (x == std::string::npos) break;
+        start = x + 1;
+    }
+    if (out.size() > 3) throw Error("--size '" + s + "' has more than 3 counts; allowed: N, NxM or NxMxK");
+    return out;
+}
+
+std::pair<std::string, std::string> split_assignment(const std::string& option, const std::string& s) {
+    const std::size_t eq = s.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
+        throw Error(option + " '" + s + "' is not valid; expected AXIS=VALUE, e.g. " + option +
+                    " alpha=" + (option == "--range" ? "0:1" : "64"));
+    return {s.substr(0, eq), s.substr(eq + 1)};
+}
+
+double parse_double(const std::string& option, const std::string& s) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(s, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != s.size() || s.empty() || !std::isfinite(v))
+        throw Error(option + " value '" + s + "' is not a finite number");
+    return v;
+}
+
+TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::set<std::string>& used) {
+    TableSettings s = default_settings(def);
+    if (!a.size.empty()) {
+        const std::vector<int> n = parse_size(a.size);
+        if (n.size() > def.axes.size())
+            throw Error("--size '" + a.size + "' has " + std::to_string(n.size()) + " counts but table '" +
+                        def.id + "' has " + std::to_string(def.axes.size()) + " axis(es)");
+        for (std::size_t i = 0; i < n.size(); ++i) s.axes[i].count = n[i];
+        // A single N sets every axis of a multi-axis table: N x N.
+        if (n.size() == 1)
+            for (auto& ax : s.axes) ax.count = n[0];
+    }
+    auto axis_named = [&](const std::string& option, const std::string& name) -> Axis* {
+        for (auto& ax : s.axes)
+            if (ax.name == name) {
+                used.insert(option + " " + name);
+                return &ax;
+            }
+        return nullptr;
+    };
+    for (const auto& r : a.ranges) {
+        const auto [name, value] = split_assignment("--range", r);
+        const std::size_t colon = value.find(':');
+        if (colon == std::string::npos)
+            throw Error("--range '" + r + "' is not valid; expected AXIS=MIN:MAX, e.g. --range eta=1:2.5");
+        if (Axis* ax = axis_named("--range", name)) {
+            ax->min = parse_double("--range " + name, value.substr(0, colon));
+            ax->max = parse_double("--range " + name, value.substr(colon + 1));
+        }
+    }
+    for (const auto& c : a.counts) {
+        const auto [name, value] = split_assignment("--count", c);
+        if (Axis* ax = axis_named("--count", name)) {
+            const double v = parse_double("--count " + name, value);
+            if (v != std::floor(v) || v < 1 || v > kMaxAxisCount)
+                throw Error("--count " + name + "=" + value + " is out of range; allowed: 1 to " +
+                            std::to_string(kMaxAxisCount));
+            ax->count = static_cast<int>(v);
+        }
+    }
+    for (const auto& p : a.placements) {
+        const auto [name, value] = split_assignment("--placement", p);
+        if (Axis* ax = axis_named("--placement", name)) ax->placement = placement_from_string(value);
+    }
+    for (const auto& w : a.warps) {
+        const auto [name, value] = split_assignment("--warp", w);
+        if (Axis* ax = axis_named("--warp", name)) ax->warp = warp_from_string(value);
+    }
+    for (const auto& [name, value] : a.params) {
+        if (s.params.count(name)) {
+            s.params[name] = value;
+            used.insert("--" + name);
+        }
+    }
+    s.method = method_from_string(a.method);
+    s.samples = a.samples;
+    s.seed = a.seed;
+    return s;
+}
+
+void check_all_used(const TableArgs& a, const std::set<std::string>& used) {
+    auto check = [&](const std::string& option, const std::vector<std::string>& values) {
+        for (const auto& v : values) {
+            const std::string name = v.substr(0, v.find('='));
+            if (!used.count(option + " " + name))
+                throw Error(option + " '" + v + "': no requested table has an axis named '" + name + "'");
+        }
+    };
+    check("--range", a.ranges);
+    check("--count", a.counts);
+    check("--placement", a.placements);
+    check("--warp", a.warps);
+    for (const auto& [name, value] : a.params)
+        if (!used.count("--" + name)) throw Error("--" + name + " does not apply to any requested table");
+}
+
+}  // namespace brdflut::cli

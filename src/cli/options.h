@@ -1,0 +1,49 @@
+// Command-line options shared by the subcommands that describe a table:
+// grid size, per-axis overrides and model options.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "brdflut/catalogue.h"
+
+namespace brdflut::cli {
+
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+struct TableArgs {
+    std::string size;  // "N" or "NxM"
+    std::vector<std::string> ranges, counts, placements, warps;
+    std::string method = "quadrature";
+    long long samples = 4096;
+    unsigned long long seed = 1;
+    std::map<std::string, std::string> option_values;  // every model option's flag
+    std::map<std::string, std::string> params;         // those given on the command line
+};
+
+// Adds --size, --range, --count, --placement, --warp and a --<name> flag for
+// every model option of the catalogue. With methods, also --method,
+// --samples and --seed.
+void add_table_options(CLI::App& app, TableArgs& a, bool methods);
+
+// After parsing: collects the model options given on the command line.
+void collect_params(const CLI::App& app, TableArgs& a);
+
+// Settings of one table from its defaults and the command line; `used`
+// collects which options applied, for check_all_used().
+TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::set<std::string>& used);
+
+// Throws Error for an option that no requested table accepts.
+void check_all_used(const TableArgs& a, const std::set<std::string>& used);
+
+// "N", "NxM" or "NxMxK".
+std::vector<int> parse_size(const std::string& s);
+double parse_double(const std::string& option, const std::string& s);
+std::pair<std::string, std::string> split_assignment(const std::string& option, const std::string& s);
+
+}  // namespace brdflut::cli
