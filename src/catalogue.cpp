@@ -13,6 +13,8 @@ const std::vector<TableDefinition>& catalogue() {
     static const std::vector<TableDefinition> all = [] {
         std::vector<TableDefinition> v;
         register_ggx_tables(v);
+        register_disney_tables(v);
+        register_oren_nayar_tables(v);
         return v;
     }();
     return all;
