@@ -162,6 +162,18 @@ TEST(Lobes, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
             }
 }
 
+TEST(Lobes, AverageErrorEstimateBoundsTheDifferenceToAFinerRun) {
+    for (Lobe lobe : {Lobe::disney_subsurface, Lobe::disney_sheen, Lobe::disney_clearcoat,
+                      Lobe::oren_nayar, Lobe::eon})
+        for (double p : {0.5 / 128, 1.0}) {
+            const Estimate<1> e = lobe_albedo_average(lobe, p, 1e-9);
+            const Estimate<1> ref = lobe_albedo_average(lobe, p, 1e-12);
+            EXPECT_LE(std::abs(e.value[0] - ref.value[0]), e.error[0] + 1e-13)
+                << to_string(lobe) << " p " << p;
+            EXPECT_LE(e.error[0], 1e-9) << to_string(lobe) << " p " << p;
+        }
+}
+
 TEST(Lobes, AgreeWithMonteCarloWithinFourStandardErrors) {
     const Lobe lobes[] = {Lobe::disney_diffuse,  Lobe::disney_subsurface, Lobe::disney_sheen,
                           Lobe::disney_clearcoat, Lobe::oren_nayar,       Lobe::fujii_oren_nayar,
