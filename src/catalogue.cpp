@@ -15,6 +15,8 @@ const std::vector<TableDefinition>& catalogue() {
         register_ggx_tables(v);
         register_fresnel_tables(v);
         register_dipole_tables(v);
+        register_disney_tables(v);
+        register_oren_nayar_tables(v);
         return v;
     }();
     return all;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "brdflut/random.h"
+#include "integrate/reflection_clip.h"
 
 namespace brdflut {
 namespace {
@@ -117,9 +118,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         const double t = alpha * std::exp(x);
         double phi_max = kPi;
         if (clipped) {
-            const double c = -mu_o * (1.0 - t * t) / (2.0 * t * sin_o);
-            if (c >= 1.0) return {0.0, 0.0, 0.0};
-            if (c > -1.0) phi_max = std::acos(c);
+            phi_max = detail::reflection_phi_max(t, mu_o, sin_o);
+            if (phi_max == 0.0) return {0.0, 0.0, 0.0};
         }
         std::array<double, 3> r = over_phi(t, phi_max);
         const double w = weight(x);
@@ -136,8 +136,9 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     };
 
     // Full circle for t <= t_a (normal incidence: t_a = 1, nothing beyond).
-    const double x_a = sin_o == 0.0 ? -ln_alpha : std::log(mu_o / (1.0 + sin_o)) - ln_alpha;
-    const double x_b = sin_o == 0.0 ? x_a : std::log((1.0 + sin_o) / mu_o) - ln_alpha;
+    const detail::ReflectionBand band = detail::reflection_band(mu_o, sin_o);
+    const double x_a = sin_o == 0.0 ? -ln_alpha : std::log(band.t_a) - ln_alpha;
+    const double x_b = sin_o == 0.0 ? x_a : std::log(band.t_b) - ln_alpha;
     // Up to t = alpha (x = 0) integrate in xi = t^2 / (alpha^2 + t^2), where
     // the distribution's measure is uniform: dxi dphi / (2 pi).
     const double x_split = std::min(0.0, x_a);

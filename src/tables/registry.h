@@ -10,6 +10,8 @@ namespace brdflut {
 void register_ggx_tables(std::vector<TableDefinition>& out);
 void register_fresnel_tables(std::vector<TableDefinition>& out);
 void register_dipole_tables(std::vector<TableDefinition>& out);
+void register_disney_tables(std::vector<TableDefinition>& out);
+void register_oren_nayar_tables(std::vector<TableDefinition>& out);
 
 // Helpers shared by the table families.
 namespace tables {

@@ -1,0 +1,203 @@
+// Quadrature of the directional albedo of the Disney lobes.
+//
+// Diffuse and subsurface. With cos^2(theta_d) = (1 + wi.wo)/2 and
+// wi.wo = mu_i mu_o + sin_i sin_o cos(phi), the grazing retro-reflection term
+// F90 - 1 = m + d cos(phi) is linear in cos(phi), so the product
+// (1 + X w_i)(1 + X w_o), w = (1 - mu)^5, averages over phi to
+//   <F> = 1 + m (w_i + w_o) + (m^2 + d^2/2) w_i w_o,
+// a polynomial in mu_i (degree 7). Then
+//   E_d  = 2 * integral of <F_d> mu_i dmu_i                          (exact Gauss),
+//   E_ss = 2.5 (integral of <F_ss> mu_i/(mu_i + mu_o) dmu_i
+//               - (1/2) integral of <F_ss> mu_i dmu_i + 1/4),
+// the first term integrated in v = ln(mu_i + mu_o), where it is smooth.
+//
+// Sheen. The lobe depends on wi only through wi.wo = 2 v^2 - 1, v = cos(theta_d).
+// Integrating in polar coordinates about wo, dw_i = 4 v dv dphi', and the
+// clipped cosine has a closed form over phi':
+//   K(u) = integral over phi' of max(0, u mu_o + sqrt(1 - u^2) sin_o cos(phi'))
+//        = 2 pi u mu_o                          u >= sin_o
+//        = 2 (u mu_o phi_m + sqrt(sin_o^2 - u^2)),  phi_m = acos(-u mu_o/(sqrt(1-u^2) sin_o)),  |u| < sin_o
+//        = 0                                    u <= -sin_o,
+// so E = integral of (1 - v)^5 K(2 v^2 - 1) 4 v dv: a polynomial above
+// v_b = sqrt((1 + sin_o)/2), a smooth function times (v - v_a)^(3/2) near the
+// ends of [v_a, v_b] (removed by a smoothstep change of variable).
+//
+// Clearcoat. Over the half vector (dw_i = 4 (wo.h) dw_h):
+//   E = integral of F_c G_c (wo.h) / (mu_o cos(theta_h)) D_c cos(theta_h) dw_h.
+// The GTR1 measure D cos(theta_h) dw_h is uniform in
+//   P = 1 - ln((t^2 + a^2)/(t^2 + 1)) / ln(a^2),  t = tan(theta_h),
+// (times dphi / 2 pi), roughly ln(t) rescaled: the lobe is smooth in P for any
+// alpha. The azimuth is clipped to the upper hemisphere as in the GGX
+// integrals (reflection_clip.h); P is split at the band limits.
+#include <cmath>
+
+#include "brdflut/disney.h"
+#include "brdflut/microfacet.h"
+#include "integrate/lobe_albedo_detail.h"
+#include "integrate/reflection_clip.h"
+
+namespace brdflut::detail {
+
+namespace {
+
+// <F> for F90 - 1 = m + d cos(phi): average over phi of (1 + X w_i)(1 + X w_o).
+double schlick_pair_phi_average(double m, double d2, double w_i, double w_o) {
+    return 1.0 + m * (w_i + w_o) + (m * m + 0.5 * d2) * w_i * w_o;
+}
+
+// Smoothstep s(u) = 3u^2 - 2u^3 and its derivative: maps [0, 1] onto itself
+// with zero slope at both ends.
+double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
+double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
+
+}  // namespace
+
+Estimate<1> disney_diffuse_albedo(double mu_o, double roughness, double /*abs_tol*/) {
+    mu_o = clamp01(mu_o);
+    const double sin2_o = 1.0 - mu_o * mu_o, w_o = schlick_weight(mu_o);
+    // F_D90 - 1 = -1/2 + r (1 + wi.wo)
+    return exact_polynomial_integral(
+        [&](double mu_i) {
+            const double m = -0.5 + roughness * (1.0 + mu_i * mu_o);
+            const double d2 = sqr(roughness) * (1.0 - mu_i * mu_i) * sin2_o;
+            return std::array<double, 1>{2.0 * mu_i *
+                                         schlick_pair_phi_average(m, d2, schlick_weight(mu_i), w_o)};
+        },
+        0.0, 1.0, 8);
+}
+
+Estimate<1> disney_subsurface_albedo(double mu_o, double roughness, double abs_tol) {
+    mu_o = clamp01(mu_o);
+    const double sin2_o = 1.0 - mu_o * mu_o, w_o = schlick_weight(mu_o);
+    // F_ss90 - 1 = r (1 + wi.wo)/2 - 1
+    auto f_ss = [&](double mu_i) {
+        const double m = 0.5 * roughness * (1.0 + mu_i * mu_o) - 1.0;
+        const double d2 = 0.25 * sqr(roughness) * (1.0 - mu_i * mu_i) * sin2_o;
+        return schlick_pair_phi_average(m, d2, schlick_weight(mu_i), w_o);
+    };
+    const Estimate<1> plain = exact_polynomial_integral(
+        [&](double mu_i) { return std::array<double, 1>{mu_i * f_ss(mu_i)}; }, 0.0, 1.0, 8);
+    // mu_i in [0, delta] is left out of the v integral (v would reach -inf at
+    // mu_o = 0); it adds at most 4 delta, counted in the error.
+    constexpr double kDelta = 1e-14;
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.2 * abs_tol;
+    const Estimate<1> ratio = integrate_adaptive<1>(
+        [&](double v) {
+            const double mu_i = std::max(0.0, std::exp(v) - mu_o);
+            return std::array<double, 1>{mu_i * f_ss(mu_i)};
+        },
+        std::log(mu_o + kDelta), std::log1p(mu_o), opt);
+    Estimate<1> out;
+    out.value[0] = 2.5 * (ratio.value[0] - 0.5 * plain.value[0] + 0.25);
+    out.error[0] = 2.5 * (ratio.error[0] + 4.0 * kDelta + 0.5 * plain.error[0]);
+    out.evaluations = ratio.evaluations + plain.evaluations;
+    return out;
+}
+
+Estimate<1> disney_sheen_albedo(double mu_o, double abs_tol) {
+    mu_o = clamp01(mu_o);
+    const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
+    // v_a = sqrt((1 - sin_o)/2) with 1 - sin_o = mu_o^2 / (1 + sin_o).
+    const double v_a = std::sqrt(0.5 * mu_o * mu_o / (1.0 + sin_o));
+    const double v_b = std::sqrt(0.5 * (1.0 + sin_o));
+    // Unclipped part: K = 2 pi u mu_o.
+    Estimate<1> out = exact_polynomial_integral(
+        [&](double v) {
+            const double u = 2.0 * v * v - 1.0;
+            return std::array<double, 1>{schlick_weight(v) * kTwoPi * u * mu_o * 4.0 * v};
+        },
+        v_b, 1.0, 8);
+    if (v_b > v_a) {
+        auto clipped = [&](double v) {
+            const double u = 2.0 * v * v - 1.0;
+            const double b = safe_sqrt(1.0 - u * u) * sin_o;
+            if (b == 0.0) return 0.0;
+            const double phi_m = std::acos(std::clamp(-u * mu_o / b, -1.0, 1.0));
+            const double k = 2.0 * (u * mu_o * phi_m + safe_sqrt(sin_o * sin_o - u * u));
+            return schlick_weight(v) * k * 4.0 * v;
+        };
+        const double len = v_b - v_a;
+        AdaptiveOptions opt;
+        opt.abs_tol = 0.5 * abs_tol;
+        const Estimate<1> c = integrate_adaptive<1>(
+            [&](double s) {
+                return std::array<double, 1>{clipped(v_a + len * smoothstep(s)) * len *
+                                             smoothstep_slope(s)};
+            },
+            0.0, 1.0, opt);
+        out.value[0] += c.value[0];
+        out.error[0] += c.error[0];
+        out.evaluations += c.evaluations;
+    }
+    return out;
+}
+
+Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
+    Estimate<1> out;
+    mu_o = std::min(mu_o, 1.0);
+    if (!(mu_o > 0.0)) return out;  // G1(mu_o) = 0 on the horizon
+    const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
+    const double alpha = clearcoat_alpha(gloss);
+    const double a2 = alpha * alpha, ln_a2 = std::log(a2);
+    const Ggx masking{kClearcoatGeometryAlpha};
+    const double g1_o = masking.G1(mu_o);
+
+    // t = tan(theta_h) from P: t^2 = a^2 (a^(-2P) - 1) / (1 - a^(2(1 - P))).
+    auto t_of_p = [&](double p) {
+        return std::sqrt(a2 * std::expm1(-p * ln_a2) / -std::expm1((1.0 - p) * ln_a2));
+    };
+    auto p_of_t = [&](double t) { return 1.0 - std::log1p((a2 - 1.0) / (t * t + 1.0)) / ln_a2; };
+
+    // Integrand at (t, cos(phi)) with respect to dP dphi / (2 pi).
+    auto at = [&](double t, double cos_phi) {
+        const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
+        const double sin_h = t * cos_h;
+        const double o_h = sin_o * sin_h * cos_phi + mu_o * cos_h;
+        const double mu_i = 2.0 * o_h * cos_h - mu_o;
+        if (mu_i <= 0.0 || o_h <= 0.0) return 0.0;
+        const double f = kClearcoatF0 + (1.0 - kClearcoatF0) * schlick_weight(o_h);
+        // (wo.h) / (mu_o cos(theta_h)) = (sin_o t cos(phi) + mu_o) / mu_o
+        return f * g1_o * masking.G1(mu_i) * (sin_o * t * cos_phi + mu_o) / mu_o;
+    };
+
+    AdaptiveOptions inner_opt;
+    inner_opt.abs_tol = 0.1 * abs_tol;
+    AdaptiveOptions outer_opt;
+    outer_opt.abs_tol = 0.4 * abs_tol;
+    outer_opt.controlled = 1;
+
+    // (1/pi) integral over phi in [0, phi_max] (the integrand is even in phi):
+    // {value, error estimate}.
+    auto over_phi = [&](double t, double phi_max) -> std::array<double, 2> {
+        if (phi_max <= 0.0) return {0.0, 0.0};
+        const Estimate<1> in = integrate_adaptive<1>(
+            [&](double phi) { return std::array<double, 1>{at(t, std::cos(phi))}; }, 0.0,
+            phi_max, inner_opt);
+        return {in.value[0] * kInvPi, in.error[0] * kInvPi};
+    };
+    auto accumulate = [&](const Estimate<2>& e) {
+        out.value[0] += e.value[0];
+        out.error[0] += e.error[0] + e.value[1];
+        out.evaluations += e.evaluations;
+    };
+
+    const ReflectionBand band = reflection_band(mu_o, sin_o);
+    const double p_a = p_of_t(band.t_a);
+    accumulate(integrate_adaptive<2>([&](double p) { return over_phi(t_of_p(p), kPi); }, 0.0, p_a,
+                                     outer_opt));
+    if (sin_o > 0.0) {
+        const double p_b = p_of_t(band.t_b), len = p_b - p_a;
+        accumulate(integrate_adaptive<2>(
+            [&](double s) -> std::array<double, 2> {
+                const double t = t_of_p(p_a + len * smoothstep(s));
+                std::array<double, 2> r = over_phi(t, reflection_phi_max(t, mu_o, sin_o));
+                const double jac = len * smoothstep_slope(s);
+                return {r[0] * jac, r[1] * jac};
+            },
+            0.0, 1.0, outer_opt));
+    }
+    return out;
+}
+
+}  // namespace brdflut::detail

@@ -1,0 +1,84 @@
+#include "tables/lobe_table.h"
+
+#include <memory>
+
+#include "brdflut/random.h"
+#include "tables/registry.h"
+
+namespace brdflut::tables {
+namespace {
+
+constexpr double kAbsTolerance = kLobeAbsTolerance;
+
+const char* kQuadratureRule =
+    "adaptive Gauss-Kronrod (7,15), split at every kink of the integrand: the phi integral in "
+    "closed form where it has one (diffuse, subsurface, Oren-Nayar family), in polar "
+    "coordinates about wo for the sheen, over the GTR1 half-vector measure with phi clipped "
+    "to the upper hemisphere for the clearcoat; polynomial parts by exact Gauss-Legendre; "
+    "averages over theta_o; error per value: QUADPACK estimate";
+
+std::string mc_sampler(Lobe lobe) {
+    return lobe == Lobe::disney_clearcoat ? "GTR1 half vectors (Burley 2012)"
+                                          : "cosine-weighted hemisphere";
+}
+
+class LobeEvaluator final : public TexelEvaluator {
+public:
+    LobeEvaluator(Lobe lobe, LobeTableKind kind, const TableSettings& s)
+        : lobe_(lobe), kind_(kind), method_(s.method), samples_(s.samples), seed_(s.seed) {}
+
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        const bool mc = method_ == Method::monte_carlo;
+        const std::uint64_t seed = mix_seed(seed_, texel);
+        Estimate<1> e;
+        switch (kind_) {
+            case LobeTableKind::albedo:
+                e = mc ? lobe_albedo_mc(lobe_, c[0], c[1], samples_, seed)
+                       : lobe_albedo(lobe_, c[0], c[1], kAbsTolerance);
+                break;
+            case LobeTableKind::albedo_1d:
+                e = mc ? lobe_albedo_mc(lobe_, c[0], 0.0, samples_, seed)
+                       : lobe_albedo(lobe_, c[0], 0.0, kAbsTolerance);
+                break;
+            case LobeTableKind::albedo_average:
+                e = mc ? lobe_albedo_average_mc(lobe_, c[0], samples_, seed)
+                       : lobe_albedo_average(lobe_, c[0], kAbsTolerance);
+                break;
+        }
+        TexelValue out;
+        out.value[0] = e.value[0];
+        out.error[0] = mc ? kMcErrorSigmas * e.error[0] : e.error[0];
+        return out;
+    }
+
+private:
+    Lobe lobe_;
+    LobeTableKind kind_;
+    Method method_;
+    long long samples_;
+    std::uint64_t seed_;
+};
+
+}  // namespace
+
+TableDefinition lobe_table(Lobe lobe, LobeTableKind kind, std::string id, std::string description,
+                           std::vector<AxisSpec> axes, std::string channel, nlohmann::json model) {
+    TableDefinition d;
+    d.id = std::move(id);
+    d.description = std::move(description);
+    d.axes = std::move(axes);
+    d.channels = {std::move(channel)};
+    d.supports_monte_carlo = true;
+    d.prepare = [lobe, kind, model](const TableSettings& s) {
+        PreparedTable p;
+        p.evaluator = std::make_unique<LobeEvaluator>(lobe, kind, s);
+        p.model = model;
+        p.method = s.method == Method::monte_carlo
+                       ? monte_carlo_method(mc_sampler(lobe), s)
+                       : quadrature_method(kQuadratureRule, kAbsTolerance);
+        return p;
+    };
+    return d;
+}
+
+}  // namespace brdflut::tables
