@@ -94,7 +94,10 @@ TEST(FresnelDielectric, TotalInternalReflectionBelowTheCriticalCosine) {
 
 TEST(FresnelDielectric, GrazingIncidenceReflectsEverythingAndMatchedIndexNothing) {
     for (double eta : {0.5, 1.2, 3.0}) EXPECT_DOUBLE_EQ(fresnel_dielectric(0.0, eta), 1.0);
-    for (double mu : {0.1, 0.5, 1.0}) EXPECT_NEAR(fresnel_dielectric(mu, 1.0), 0.0, 1e-30);
+    for (double mu : {0.0, 0.1, 0.5, 1.0}) {
+        EXPECT_NEAR(fresnel_dielectric(mu, 1.0), 0.0, 1e-30) << mu;
+        EXPECT_NEAR(fresnel_conductor(mu, 1.0, 0.0), 0.0, 1e-30) << mu;
+    }
 }
 
 // ---- conductor reflectance -----------------------------------------------

@@ -10,6 +10,7 @@
 #include "brdflut/dipole_integrals.h"
 #include "brdflut/fresnel.h"
 #include "brdflut/math.h"
+#include "brdflut/oren_nayar.h"
 #include "brdflut/verify.h"
 
 namespace brdflut {
@@ -181,6 +182,67 @@ std::map<std::string, std::vector<ClosedFormCheck>> build() {
                          r = {err, "at radius " + std::to_string(radius) + ", albedo " + std::to_string(a)};
                  }
              return r;
+         }},
+    };
+
+    // Disney diffuse (Burley 2012) per unit base colour.
+    std::vector<std::array<double, 2>> rough0, normal;
+    for (double mu : {0.5 / 128, 0.1, 0.5, 0.9, 1.0}) rough0.push_back({mu, 0.0});
+    for (double r : {0.0, 0.25, 0.5, 1.0}) normal.push_back({1.0, r});
+    m["disney_diffuse_albedo"] = {
+        {"E(mu, r = 0) vs (41/42)(1 - (1 - mu)^5/2)", 1e-9,
+         [rough0](const TexelEvaluator& e) {
+             return worst_over(e, rough0, 0, [](const auto& p) { return 41.0 / 42.0 * (1.0 - 0.5 * std::pow(1.0 - p[0], 5)); });
+         }},
+        {"E(1, r) vs 41/42 + 5r/84", 1e-9,
+         [normal](const TexelEvaluator& e) {
+             return worst_over(e, normal, 0, [](const auto& p) { return 41.0 / 42.0 + 5.0 * p[1] / 84.0; });
+         }},
+    };
+    m["disney_diffuse_albedo_avg"] = {
+        {"E_avg(r = 0) vs (41/42)^2", 1e-9,
+         [](const TexelEvaluator& e) {
+             const std::vector<std::array<double, 1>> pts{{0.0}};
+             return worst_over(e, pts, 0, [](const auto&) { return sqr(41.0 / 42.0); });
+         }},
+    };
+
+    // Oren-Nayar family: sigma = 0 is Lambertian; FON has closed forms; EON is a white furnace.
+    std::vector<std::array<double, 2>> grid;
+    for (double mu : {0.5 / 128, 0.05, 0.3, 0.7, 1.0})
+        for (double sigma : {0.0, 0.3, 0.7, 1.0}) grid.push_back({mu, sigma});
+    m["oren_nayar_albedo"] = {
+        {"E(mu, sigma = 0) vs 1 (Lambertian)", 1e-9,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 2>> pts;
+             for (double mu : {0.5 / 128, 0.3, 1.0}) pts.push_back({mu, 0.0});
+             return worst_over(e, pts, 0, [](const auto&) { return 1.0; });
+         }},
+    };
+    m["fujii_oren_nayar_albedo"] = {
+        {"E(mu, sigma) vs A + (sigma A/pi) G(theta)", 1e-9,
+         [grid](const TexelEvaluator& e) {
+             return worst_over(e, grid, 0, [](const auto& p) { return FujiiOrenNayar{p[1]}.albedo(p[0]); });
+         }},
+    };
+    m["fujii_oren_nayar_albedo_avg"] = {
+        {"E_avg(sigma) vs A (1 + (2/3 - 28/(15 pi)) sigma)", 1e-9,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 1>> pts;
+             for (double sigma : {0.0, 0.2, 0.6, 1.0}) pts.push_back({sigma});
+             return worst_over(e, pts, 0, [](const auto& p) { return FujiiOrenNayar{p[0]}.average_albedo(); });
+         }},
+    };
+    m["eon_albedo"] = {
+        {"E(mu, sigma) vs 1 (white furnace)", 1e-6,
+         [grid](const TexelEvaluator& e) { return worst_over(e, grid, 0, [](const auto&) { return 1.0; }); }},
+    };
+    m["eon_albedo_avg"] = {
+        {"E_avg(sigma) vs 1 (white furnace)", 1e-6,
+         [](const TexelEvaluator& e) {
+             std::vector<std::array<double, 1>> pts;
+             for (double sigma : {0.0, 0.5, 1.0}) pts.push_back({sigma});
+             return worst_over(e, pts, 0, [](const auto&) { return 1.0; });
          }},
     };
     return m;

@@ -93,14 +93,14 @@ int run_verify(const VerifyArgs& a) {
     std::vector<CheckRow> rows;
     bool ok = true;
     if (!a.json)
-        std::printf("%-26s %-72s %-10s %-10s %s\n", "table", "check", "max error", "tolerance", "result");
+        std::printf("%-28s %-72s %-10s %-10s %s\n", "table", "check", "max error", "tolerance", "result");
     for (const auto* d : defs) {
         std::vector<CheckRow> r = verify_table(*d, opt);
         if (r.empty()) r.push_back({d->id, "no independent check available", 0.0, 0.0, true, ""});
         for (const CheckRow& row : r) {
             ok = ok && row.pass;
             if (!a.json) {
-                std::printf("%-26s %-72s %-10s %-10s %s%s\n", row.table.c_str(), row.check.c_str(),
+                std::printf("%-28s %-72s %-10s %-10s %s%s\n", row.table.c_str(), row.check.c_str(),
                             sci(row.max_error).c_str(), sci(row.tolerance).c_str(), row.pass ? "pass" : "FAIL",
                             row.where.empty() ? "" : ("  (" + row.where + ")").c_str());
                 std::fflush(stdout);

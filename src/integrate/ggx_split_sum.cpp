@@ -20,7 +20,6 @@
 #include <cmath>
 #include <vector>
 
-#include "brdflut/random.h"
 #include "integrate/reflection_clip.h"
 
 namespace brdflut {
@@ -197,62 +196,6 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
         out.error[0] += e.error[0] + e.value[1];
         out.evaluations += e.evaluations;
     }
-    return out;
-}
-
-namespace {
-// One visible-normal sample: estimator weights {A, B} = G2/G1(o) {1 - Fc, Fc}.
-void split_sum_sample(const Ggx& ggx, Visibility vis, const Vec3& wo, Rng& rng, double* w) {
-    const Vec3 m = ggx.sample_visible_normal(wo, rng.uniform(), rng.uniform());
-    const double o_m = dot(wo, m);
-    const double mu_i = 2.0 * o_m * m.z - wo.z;
-    w[0] = w[1] = 0.0;
-    if (mu_i <= 0.0 || o_m <= 0.0) return;
-    const double weight = ggx.G2(wo.z, mu_i, vis) / ggx.G1(wo.z);
-    const double fc = schlick_weight(o_m);
-    w[0] = weight * (1.0 - fc);
-    w[1] = weight * fc;
-}
-}  // namespace
-
-Estimate<2> ggx_split_sum_mc(double mu_o, double alpha, Visibility vis, long long samples,
-                             std::uint64_t seed) {
-    Estimate<2> out;
-    if (!(mu_o > 0.0)) return out;
-    const Ggx ggx{alpha};
-    const Vec3 wo = direction_from_mu(std::min(mu_o, 1.0));
-    Rng rng(seed, 0);
-    MeanAccumulator<2> acc;
-    for (long long s = 0; s < samples; ++s) {
-        double w[2];
-        split_sum_sample(ggx, vis, wo, rng, w);
-        acc.add(w);
-    }
-    for (int c = 0; c < 2; ++c) {
-        out.value[c] = acc.mean[c];
-        out.error[c] = acc.standard_error(c);
-    }
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
-}
-
-Estimate<1> ggx_albedo_average_mc(double alpha, Visibility vis, long long samples,
-                                  std::uint64_t seed) {
-    const Ggx ggx{alpha};
-    Rng rng(seed, 1);
-    MeanAccumulator<1> acc;
-    for (long long s = 0; s < samples; ++s) {
-        // mu with density 2 mu on [0, 1]: mu = sqrt(u); 1 - u keeps mu > 0.
-        const double mu = std::sqrt(1.0 - rng.uniform());
-        double w[2];
-        split_sum_sample(ggx, vis, direction_from_mu(mu), rng, w);
-        const double e = w[0] + w[1];
-        acc.add(&e);
-    }
-    Estimate<1> out;
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
     return out;
 }
 

@@ -12,6 +12,9 @@ namespace brdflut {
 
 FresnelAmplitudes fresnel_dielectric_amplitudes(double cos_i, double eta) {
     cos_i = clamp01(cos_i);
+    // Matched index: there is no interface, so nothing is reflected, at
+    // grazing incidence too (where the formulas below would give 0/0).
+    if (eta == 1.0) return {0.0, 0.0};
     const double sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
     if (sin2_t >= 1.0) return {1.0, 1.0};  // total internal reflection
     const double cos_t = std::sqrt(1.0 - sin2_t);
@@ -55,11 +58,11 @@ double fresnel_conductor(double cos_i, double eta, double k) {
     // Im(w) >= 0 (as Im(n^2) = 2 eta k >= 0): the transmitted wave decays
     // into the conductor; for k = 0 beyond the critical angle w is imaginary
     // and both |rs| and |rp| are 1.
+    // Matched index (eta = 1, k = 0): no interface, nothing reflected, at
+    // grazing incidence too (where the quotients below would be 0/0).
+    if (eta == 1.0 && k == 0.0) return 0.0;
     const C w = std::sqrt(n2 - sin2_i);
     const C rs_den = cos_i + w, rp_den = n2 * cos_i + w;
-    // Both vanish only at grazing incidence on an index-matched interface
-    // (eta = 1, k = 0), whose limit is 1 as for every interface at grazing.
-    if (rs_den == 0.0 || rp_den == 0.0) return 1.0;
     const C rs = (cos_i - w) / rs_den;
     const C rp = (n2 * cos_i - w) / rp_den;
     return 0.5 * (std::norm(rs) + std::norm(rp));
