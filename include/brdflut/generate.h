@@ -19,4 +19,8 @@ struct GenerateOptions {
 Table generate(const TableDefinition& def, const TableSettings& settings,
                const GenerateOptions& options = {});
 
+// Runs fn(i) for every i in [0, n) on up to `threads` worker threads (0: all).
+// fn must write only to its own slot of any shared output.
+void parallel_for_index(std::size_t n, int threads, const std::function<void(std::size_t)>& fn);
+
 }  // namespace brdflut

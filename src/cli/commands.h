@@ -55,6 +55,16 @@ struct SampleArgs {
 };
 int run_sample(const SampleArgs& a);
 
+struct FurnaceArgs {
+    std::vector<std::string> models;
+    bool json = false;
+    int size = 64;
+    int threads = 0;
+    double tolerance = -1;
+    std::string plot;  // folder for PNG heatmaps
+};
+int run_furnace(const FurnaceArgs& a);
+
 bool stderr_is_terminal();
 
 }  // namespace brdflut::cli

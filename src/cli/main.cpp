@@ -62,6 +62,15 @@ int main(int argc, char** argv) {
     ver->add_flag("--json", v.json, "Print the results as JSON");
     ver->add_option("--samples", v.samples, "Monte Carlo samples per checked texel")->capture_default_str();
 
+    CLI::App* fur = app.add_subcommand("furnace", "White-furnace report: albedo of every BRDF model over its parameters");
+    FurnaceArgs f;
+    fur->add_option("models", f.models, "Model ids (default: every model)");
+    fur->add_flag("--json", f.json, "Print the report as JSON");
+    fur->add_option("--size", f.size, "Grid points per axis")->capture_default_str();
+    fur->add_option("--threads", f.threads, "Worker threads; 0 uses every core");
+    fur->add_option("--tolerance", f.tolerance,
+                    "Allowed |E - 1| for the models meant to conserve energy (default: each model's own)");
+
     CLI::App* cmp = app.add_subcommand("compare", "Compare a LUT file with exact values");
     CompareArgs c;
     add_describe_options(*cmp, c.describe);
@@ -80,7 +89,7 @@ int main(int argc, char** argv) {
     add_describe_options(*smp, s.describe);
     smp->add_option("--at", s.at, "Parameter point, e.g. cos_theta=0.5,alpha=0.1")->required();
 
-    const std::vector<std::string> commands{"list", "generate", "verify", "compare", "inspect", "sample"};
+    const std::vector<std::string> commands{"list", "generate", "verify", "furnace", "compare", "inspect", "sample"};
     if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
         std::string known;
         for (const auto& name : commands) known += (known.empty() ? "" : ", ") + name;
@@ -107,6 +116,7 @@ int main(int argc, char** argv) {
             return run_generate(g);
         }
         if (app.got_subcommand(ver)) return run_verify(v);
+        if (app.got_subcommand(fur)) return run_furnace(f);
         if (app.got_subcommand(cmp)) {
             collect_params(*cmp, c.describe.table);
             return run_compare(c);

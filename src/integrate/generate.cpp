@@ -77,4 +77,14 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     return t;
 }
 
+void parallel_for_index(std::size_t n, int threads, const std::function<void(std::size_t)>& fn) {
+    const int t = threads > 0 ? threads : static_cast<int>(oneapi::tbb::info::default_concurrency());
+    oneapi::tbb::global_control limit(oneapi::tbb::global_control::max_allowed_parallelism,
+                                      static_cast<std::size_t>(t));
+    oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, n, 1),
+                              [&](const oneapi::tbb::blocked_range<std::size_t>& r) {
+                                  for (std::size_t i = r.begin(); i != r.end(); ++i) fn(i);
+                              });
+}
+
 }  // namespace brdflut

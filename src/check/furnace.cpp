@@ -1,0 +1,156 @@
+#include "brdflut/furnace.h"
+
+#include <cmath>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/error.h"
+#include "brdflut/generate.h"
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/quadrature.h"
+
+namespace brdflut {
+namespace {
+
+std::vector<FurnaceModel> build() {
+    const std::pair<std::string, std::string> hc{"visibility", "height_correlated"}, sep{"visibility", "separable"};
+    return {
+        {"ggx", "GGX single scattering, height-correlated Smith G2", "ggx_albedo", "ggx_albedo_avg", {hc}, false, false, 0},
+        {"ggx_separable", "GGX single scattering, separable Smith G1 G1", "ggx_albedo", "ggx_albedo_avg", {sep}, false, false, 0},
+        {"ggx_kulla_conty", "GGX (height-correlated) plus the Kulla-Conty multiple-scattering lobe", "ggx_albedo",
+         "ggx_albedo_avg", {hc}, true, true, 1e-4},
+        {"disney_diffuse", "Burley 2012 diffuse", "disney_diffuse_albedo", "disney_diffuse_albedo_avg", {}, false, false, 0},
+        {"disney_subsurface", "Burley 2012 subsurface (Hanrahan-Krueger-like)", "disney_subsurface_albedo",
+         "disney_subsurface_albedo_avg", {}, false, false, 0},
+        {"disney_sheen", "Burley 2012 sheen, per unit sheen weight", "disney_sheen_albedo", "", {}, false, false, 0},
+        {"disney_clearcoat", "Burley 2012 clearcoat (GTR1, F0 = 0.04), weight 1", "disney_clearcoat_albedo",
+         "disney_clearcoat_albedo_avg", {}, false, false, 0},
+        {"oren_nayar", "Oren-Nayar 1994, qualitative model", "oren_nayar_albedo", "oren_nayar_albedo_avg", {}, false, false, 0},
+        {"fujii_oren_nayar", "Fujii Oren-Nayar (OpenPBR normalization)", "fujii_oren_nayar_albedo",
+         "fujii_oren_nayar_albedo_avg", {}, false, false, 0},
+        {"eon", "EON, energy-preserving Oren-Nayar (Portsmouth et al. 2025)", "eon_albedo", "eon_albedo_avg", {}, false,
+         true, 1e-6},
+    };
+}
+
+// 2 * integral of (1 - E(mu)) mu dmu by composite Gauss-Legendre on panels
+// geometric from alpha (E falls to 0 where mu ~ alpha): a second rule,
+// independent of the adaptive one behind ggx_albedo_average.
+double ms_lobe_normalization(double alpha, Visibility vis) {
+    std::vector<double> breaks{0.0};
+    for (double m = alpha; m < 1.0; m *= 4.0) breaks.push_back(m);
+    breaks.push_back(1.0);
+    double sum = 0.0;
+    for (std::size_t p = 0; p + 1 < breaks.size(); ++p)
+        sum += integrate_gauss<1>(
+            [&](double mu) {
+                const Estimate<2> e = ggx_split_sum(mu, alpha, vis, 1e-11);
+                return std::array<double, 1>{2.0 * mu * (1.0 - e.value[0] - e.value[1])};
+            },
+            breaks[p], breaks[p + 1], 16)[0];
+    return sum;
+}
+
+}  // namespace
+
+const std::vector<FurnaceModel>& furnace_models() {
+    static const std::vector<FurnaceModel> all = build();
+    return all;
+}
+
+const FurnaceModel& find_furnace_model(const std::string& id) {
+    for (const auto& m : furnace_models())
+        if (m.id == id) return m;
+    std::string known;
+    for (const auto& m : furnace_models()) known += (known.empty() ? "" : ", ") + m.id;
+    throw Error("model '" + id + "' is not known; allowed: " + known);
+}
+
+FurnaceReport run_furnace(const FurnaceModel& model, const FurnaceOptions& opt) {
+    if (opt.size < 2 || opt.size > 1024)
+        throw Error("--size " + std::to_string(opt.size) + " is out of range; allowed: 2 to 1024");
+    FurnaceReport rep;
+    rep.model = &model;
+    rep.tolerance = opt.tolerance >= 0 ? opt.tolerance : model.tolerance;
+
+    const TableDefinition& def = find_table(model.albedo_table);
+    TableSettings s = default_settings(def);
+    for (Axis& a : s.axes) a.count = opt.size;
+    for (const auto& [k, v] : model.params) s.params[k] = v;
+    GenerateOptions g;
+    g.threads = opt.threads;
+    const Table e = generate(def, s, g);
+    rep.axes = e.axes;
+    rep.albedo = e.values;
+    const int nx = e.axes[0].count;
+    const int ny = e.axes.size() > 1 ? e.axes[1].count : 1;
+
+    if (!model.average_table.empty()) {
+        const TableDefinition& adef = find_table(model.average_table);
+        TableSettings as = default_settings(adef);
+        as.axes[0] = s.axes[1];
+        for (const auto& [k, v] : model.params) as.params[k] = v;
+        rep.averages = generate(adef, as, g).values;
+    } else {
+        // A 1-D albedo table: its average 2 * integral of E(mu) mu dmu, by
+        // adaptive quadrature over the table's own evaluator.
+        const PreparedTable p = def.prepare(s);
+        AdaptiveOptions ao;
+        ao.abs_tol = 1e-10;
+        rep.averages = {integrate_adaptive<1>(
+                            [&](double mu) {
+                                return std::array<double, 1>{2.0 * mu * p.evaluator->evaluate(&mu, 0).value[0]};
+                            },
+                            0.0, 1.0, ao)
+                            .value[0]};
+    }
+
+    if (model.kulla_conty) {
+        // E_total(mu) = E(mu) + integral of f_ms cos(theta_i) dw_i, with
+        // f_ms = (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)): the lobe's
+        // albedo is (1 - E(mu_o)) * [2 integral of (1 - E) mu dmu] / (1 - E_avg),
+        // the bracket by a second, independent rule. Exactly 1 in theory.
+        const Visibility vis = visibility_from_string(s.params.at("visibility"));
+        std::vector<double> norms(static_cast<std::size_t>(ny));
+        parallel_for_index(norms.size(), opt.threads, [&](std::size_t j) {
+            norms[j] = ms_lobe_normalization(e.axes[1].value(static_cast<int>(j)), vis);
+        });
+        for (int j = 0; j < ny; ++j) {
+            const double loss_avg = 1.0 - rep.averages[static_cast<std::size_t>(j)];
+            const double norm = norms[static_cast<std::size_t>(j)];
+            for (int i = 0; i < nx; ++i) {
+                double& v = rep.albedo[static_cast<std::size_t>(j * nx + i)];
+                if (loss_avg > 0.0) v += (1.0 - v) * norm / loss_avg;
+            }
+            if (loss_avg > 0.0) rep.averages[static_cast<std::size_t>(j)] += norm;  // E_avg + (1 - E_avg) norm / (1 - E_avg)
+        }
+    }
+
+    auto point = [&](std::size_t k, double value) {
+        FurnacePoint p;
+        p.value = value;
+        p.params.push_back(e.axes[0].value(static_cast<int>(k % static_cast<std::size_t>(nx))));
+        if (e.axes.size() > 1) p.params.push_back(e.axes[1].value(static_cast<int>(k / static_cast<std::size_t>(nx))));
+        return p;
+    };
+    rep.min = point(0, rep.albedo[0]);
+    rep.max = rep.min;
+    rep.max_excess = point(0, rep.albedo[0] - 1.0);
+    rep.worst_loss = point(0, 1.0 - rep.albedo[0]);
+    for (std::size_t k = 0; k < rep.albedo.size(); ++k) {
+        const double v = rep.albedo[k];
+        if (v < rep.min.value) rep.min = point(k, v);
+        if (v > rep.max.value) rep.max = point(k, v);
+        if (v - 1.0 > rep.max_excess.value) rep.max_excess = point(k, v - 1.0);
+        if (1.0 - v > rep.worst_loss.value) rep.worst_loss = point(k, 1.0 - v);
+        if (model.conserves && !(std::abs(v - 1.0) <= rep.tolerance)) rep.pass = false;
+    }
+    rep.average_min = rep.average_max = rep.averages.front();
+    for (double a : rep.averages) {
+        rep.average_min = std::min(rep.average_min, a);
+        rep.average_max = std::max(rep.average_max, a);
+        if (model.conserves && !(std::abs(a - 1.0) <= rep.tolerance)) rep.pass = false;
+    }
+    return rep;
+}
+
+}  // namespace brdflut
