@@ -447,6 +447,18 @@ TEST(Heatmap, TextIsInkedInsideTheImageAndOverlapsNothing) {
         h.y = {"y", Axis{"y", 0.25, 0.3, 30, Placement::center, Warp::sqrt}};
         cases.push_back(h);
     }
+    {
+        // Rotated labels longer than the plot, a long legend line, and an
+        // x range too narrow beside its magnitude for any tick.
+        Heatmap h = grid(300, 20, [](int i, int j) { return i - j; });
+        h.x.axis.min = 1000.0;
+        h.x.axis.max = 1000.0 + 1e-12;
+        h.y.label = std::string(60, 'y') + " a y label longer than the side of the plot";
+        h.colorbar_label = std::string(60, 'c') + " a colour bar label longer than the plot";
+        h.highlight = HeatmapHighlight{5.0, "outline: a legend line that runs well past the colour bar of this plot"};
+        h.values[7] = std::numeric_limits<double>::quiet_NaN();
+        cases.push_back(h);
+    }
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const HeatmapImage img = render_heatmap(cases[k]);
         ASSERT_EQ(img.rgb.size(), static_cast<std::size_t>(img.width) * img.height * 3);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <set>
 #include <utility>
 
 #include "brdflut/error.h"
@@ -14,7 +15,6 @@ namespace brdflut {
 namespace {
 
 using Color = std::array<std::uint8_t, 3>;
-constexpr Color kWhite{255, 255, 255};
 constexpr Color kInk{0, 0, 0};
 
 // Layout, in pixels. Text is drawn at an integer scale of the bitmap font.
@@ -83,15 +83,16 @@ std::vector<Tick> axis_ticks(const Axis& a) {
             break;
         }
     const double k0 = std::ceil(lo / step - 1e-9), k1 = std::floor(hi / step + 1e-9);
-    for (double k = k0; k <= k1; k += 1.0) {
-        double v = k * step;
+    // A range tiny beside its magnitude (k beyond 2^53) gets no ticks.
+    if (!(k1 - k0 >= 0.0 && k1 - k0 <= 20.0)) return ticks;
+    for (int m = 0; m <= static_cast<int>(k1 - k0); ++m) {
+        double v = (k0 + m) * step;
         if (std::fabs(v) < 1e-9 * step) v = 0.0;
         ticks.push_back({v, plot_fraction(a, std::clamp(v, lo, hi))});
     }
     return ticks;
 }
 
-std::string tick_label(double v) { return format_number(v, 6); }
 
 struct PlacedTick {
     int pos;  // pixel column (x axis) or row (y axis) relative to the plot
@@ -103,10 +104,20 @@ struct PlacedTick {
 // labelled, with the smallest stride that keeps labels apart; the others get
 // a short unlabelled mark.
 std::vector<PlacedTick> place_ticks(const Axis& a, int pixels, bool vertical) {
+    // Labels with 6 significant digits, or more until they differ; none if
+    // even 17 digits cannot tell them apart.
+    const std::vector<Tick> values = axis_ticks(a);
     std::vector<PlacedTick> ticks;
-    for (const Tick& t : axis_ticks(a)) {
-        const int offset = static_cast<int>(std::lround(t.fraction * pixels));
-        ticks.push_back({vertical ? pixels - offset : offset, tick_label(t.value), false});
+    for (int digits = 6; digits <= 17; ++digits) {
+        ticks.clear();
+        std::set<std::string> distinct;
+        for (const Tick& t : values) {
+            const int offset = static_cast<int>(std::lround(t.fraction * pixels));
+            ticks.push_back({vertical ? pixels - offset : offset, format_number(t.value, digits), false});
+            distinct.insert(ticks.back().label);
+        }
+        if (distinct.size() == ticks.size()) break;
+        if (digits == 17) return {};
     }
     // Extent of a label along the axis, and the gap wanted between labels.
     auto extent = [&](const PlacedTick& t) {
@@ -127,6 +138,14 @@ std::vector<PlacedTick> place_ticks(const Axis& a, int pixels, bool vertical) {
         break;
     }
     return ticks;
+}
+
+// Top of a label rotated along an axis of `pixels` pixels: centred on it, or
+// flush with its bottom when longer, so that it never reaches the text under
+// the plot.
+int rotated_label_top(const std::string& s, int pixels) {
+    const int len = text_width(s);
+    return len <= pixels ? (pixels - len) / 2 : pixels - len;
 }
 
 struct TextItem {
@@ -258,6 +277,10 @@ HeatmapImage render_heatmap(const Heatmap& h) {
     const bool flat = !(vmin < vmax);  // a constant field: every cell mid-colour
 
     // Everything is placed relative to the plot's top-left corner, then shifted.
+    // Text cannot collide by construction: tick labels, the x label and the
+    // legend lie in rows under the plot; the rotated labels lie in columns
+    // left of the y tick labels and right of the colour bar labels, and never
+    // below the plot; the title is above everything else.
     const int pw = axis_pixels(nx), ph = axis_pixels(ny);
     std::vector<TextItem> items;
 
@@ -276,11 +299,9 @@ HeatmapImage render_heatmap(const Heatmap& h) {
     const int x_label_top = ph + kTickLength + kTickGap + kTextHeight + kLabelGap;
     if (!h.x.label.empty())
         items.push_back({h.x.label, (pw - text_width(h.x.label)) / 2, x_label_top, false});
-    if (!h.y.label.empty()) {
-        const int len = text_width(h.y.label);
+    if (!h.y.label.empty())
         items.push_back({h.y.label, -kTickLength - kTickGap - y_tick_width - kLabelGap - kTextHeight,
-                         (ph - len) / 2, true});
-    }
+                         rotated_label_top(h.y.label, ph), true});
 
     // Colour bar with ticks at vmin, the middle and vmax.
     const int cb_x = pw + kColorbarGap;
@@ -298,10 +319,9 @@ HeatmapImage render_heatmap(const Heatmap& h) {
             items.push_back({s, cb_label_x, row - kCapHeight / 2, false});
         }
     }
-    if (!h.colorbar_label.empty()) {
-        const int len = text_width(h.colorbar_label);
-        items.push_back({h.colorbar_label, cb_label_x + cb_tick_width + kLabelGap, (ph - len) / 2, true});
-    }
+    if (!h.colorbar_label.empty())
+        items.push_back({h.colorbar_label, cb_label_x + cb_tick_width + kLabelGap,
+                         rotated_label_top(h.colorbar_label, ph), true});
 
     // Legend lines under the x label: the data range, non-finite cells, the highlight.
     struct LegendSwatch {
@@ -397,8 +417,8 @@ HeatmapImage render_heatmap(const Heatmap& h) {
     }
     canvas.frame(img.colorbar.x, dy, kColorbarWidth, ph, 1, kInk);
 
-    // Ticks: 2 pixels thick, centred on the tick position.
-    // Ticks without a label are half as long.
+    // Ticks: 2 pixels thick, centred on the tick position; those without a
+    // label are half as long.
     for (const PlacedTick& t : y_ticks) {
         const int len = t.labelled ? kTickLength : kTickLength / 2;
         canvas.fill(dx - 1 - len, dy + t.pos - 1, len, 2, kInk);
