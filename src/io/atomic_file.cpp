@@ -37,7 +37,10 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
     namespace fs = std::filesystem;
     const fs::path p(path_);
     const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-    std::string pattern = (dir / ("." + p.filename().string() + ".tmp-XXXXXX")).string();
+    std::string name = ".";  // built in steps: GCC 12 warns (-Wrestrict) on "." + string
+    name += p.filename().string();
+    name += ".tmp-XXXXXX";
+    std::string pattern = (dir / name).string();
     const int fd = ::mkstemp(pattern.data());
     if (fd < 0)
         throw RuntimeError("cannot write '" + path_ + "': cannot create a file in '" +
