@@ -1,5 +1,6 @@
 // verify, compare, inspect and sample: the checking side of the tool.
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -7,6 +8,7 @@
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
 #include "brdflut/lut.h"
+#include "brdflut/plot.h"
 #include "brdflut/verify.h"
 #include "cli/commands.h"
 
@@ -128,6 +130,18 @@ int run_compare(const CompareArgs& a) {
     const Described d = describe(a.describe);
     const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst));
     const auto& axes = d.lut.settings.axes;
+    if (!a.plot.empty()) {
+        if (axes.size() > 2) throw Error("--plot: 3-D tables cannot be drawn as one heatmap");
+        Heatmap h;
+        h.title = "compare " + std::filesystem::path(a.describe.file).filename().string() + " with exact " + d.lut.def->id;
+        h.x = {axes[0].name, axes[0]};
+        h.y = axes.size() > 1 ? HeatmapAxis{axes[1].name, axes[1]}
+                              : HeatmapAxis{"(1-D table)", Axis{"none", 0.0, 1.0, 1, Placement::center, Warp::linear}};
+        // log10 of the largest error over the channels; exact zeros at the floor.
+        for (double e : rep.max_error_map) h.values.push_back(std::log10(std::max(e, 1e-12)));
+        h.colorbar_label = "log10 |stored - exact| (max over channels)";
+        write_heatmap_png(a.plot, h);
+    }
     if (a.json) {
         nlohmann::json j;
         j["file"] = a.describe.file;

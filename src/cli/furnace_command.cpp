@@ -1,9 +1,11 @@
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
 #include "brdflut/error.h"
 #include "brdflut/furnace.h"
+#include "brdflut/plot.h"
 #include "cli/commands.h"
 
 namespace brdflut::cli {
@@ -25,6 +27,19 @@ nlohmann::json point_json(const FurnaceReport& r, const FurnacePoint& p) {
     return {{"value", p.value}, {"at", at}};
 }
 
+void plot(const FurnaceReport& r, const std::string& dir) {
+    Heatmap h;
+    h.title = r.model->id + ": directional albedo E (white furnace, F = 1, unit colour)";
+    h.x = {"cos_theta = cos(theta_o)", r.axes[0]};
+    h.y = r.axes.size() > 1 ? HeatmapAxis{r.axes[1].name, r.axes[1]}
+                            : HeatmapAxis{"(no parameter)", Axis{"none", 0.0, 1.0, 1, Placement::center, Warp::linear}};
+    h.values = r.albedo;
+    h.colorbar_label = "albedo E";
+    h.highlight = HeatmapHighlight{1.0, "outline: E > 1 (gains energy)"};
+    const std::string path = (std::filesystem::path(dir) / ("furnace_" + r.model->id + ".png")).string();
+    write_heatmap_png(path, h);
+}
+
 }  // namespace
 
 int run_furnace(const FurnaceArgs& a) {
@@ -38,6 +53,12 @@ int run_furnace(const FurnaceArgs& a) {
     opt.size = a.size;
     opt.threads = a.threads;
     opt.tolerance = a.tolerance;
+    if (!a.plot.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(a.plot, ec);
+        if (ec || !std::filesystem::is_directory(a.plot))
+            throw RuntimeError("cannot create plot folder '" + a.plot + "'" + (ec ? ": " + ec.message() : ""));
+    }
     bool ok = true;
     nlohmann::json out = nlohmann::json::array();
     if (!a.json)
@@ -46,6 +67,7 @@ int run_furnace(const FurnaceArgs& a) {
     for (const FurnaceModel* m : models) {
         const FurnaceReport r = run_furnace(*m, opt);
         ok = ok && r.pass;
+        if (!a.plot.empty()) plot(r, a.plot);
         if (a.json) {
             out.push_back({{"model", m->id},
                            {"description", m->description},

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
     fur->add_option("--threads", f.threads, "Worker threads; 0 uses every core");
     fur->add_option("--tolerance", f.tolerance,
                     "Allowed |E - 1| for the models meant to conserve energy (default: each model's own)");
+    fur->add_option("--plot", f.plot, "Folder for one PNG heatmap per model (furnace_<model>.png)");
 
     CLI::App* cmp = app.add_subcommand("compare", "Compare a LUT file with exact values");
     CompareArgs c;
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
     cmp->add_flag("--json", c.json, "Print the report as JSON");
     cmp->add_option("--worst", c.worst, "How many of the worst texels to list")->capture_default_str();
     cmp->add_option("--threads", c.threads, "Worker threads for the exact values; 0 uses every core");
+    cmp->add_option("--plot", c.plot, "Write a PNG heatmap of log10 |stored - exact| to this file");
 
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;
