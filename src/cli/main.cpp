@@ -33,6 +33,32 @@ void add_describe_options(CLI::App& app, DescribeArgs& d) {
     add_table_options(app, d.table, false);
 }
 
+// Options from a TOML file (CLI11's reader) for every option not given on
+// the command line: keys are the long option names without dashes.
+void apply_config(CLI::App& app, const std::string& path) {
+    std::vector<CLI::ConfigItem> items;
+    try {
+        items = CLI::ConfigTOML().from_file(path);
+    } catch (const CLI::Error& e) {
+        throw RuntimeError("cannot read config '" + path + "': " + e.what());
+    }
+    for (const CLI::ConfigItem& item : items) {
+        if (item.name == "++" || item.name == "--") continue;  // section markers
+        const std::string key = item.fullname();
+        CLI::Option* opt = app.get_option_no_throw("--" + key);
+        if (!opt) opt = app.get_option_no_throw(key);
+        if (!opt || key == "config")
+            throw Error("config '" + path + "': key '" + key + "' is not an option of 'generate'");
+        if (opt->count() > 0) continue;  // the command line wins
+        try {
+            opt->add_result(item.inputs);
+            opt->run_callback();
+        } catch (const CLI::Error& e) {
+            throw Error("config '" + path + "': " + key + ": " + e.what());
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,6 +80,9 @@ int main(int argc, char** argv) {
     gen->add_option("--pixel", g.pixel, "Stored pixel type: half or float")->capture_default_str();
     gen->add_option("--threads", g.threads, "Worker threads; 0 uses every core")->capture_default_str();
     gen->add_flag("-q,--quiet", g.quiet, "Print nothing but errors");
+    std::string config_file;
+    gen->add_option("--config", config_file,
+                    "Read generate options from a TOML file, keys named as the long options (command-line options win)");
     add_table_options(*gen, g.table, true);
 
     CLI::App* ver = app.add_subcommand("verify", "Check tables against closed forms and Monte Carlo");
@@ -114,6 +143,7 @@ int main(int argc, char** argv) {
 
     try {
         if (app.got_subcommand(gen)) {
+            if (!config_file.empty()) apply_config(*gen, config_file);
             collect_params(*gen, g.table);
             return run_generate(g);
         }
