@@ -86,6 +86,26 @@ TEST(GgxSplitSum, MirrorLimitAsAlphaGoesToZero) {
         }
 }
 
+TEST(GgxSplitSum, NormalIncidenceLossIsAlphaSquaredForSmallAlpha) {
+    // At mu_o = 1 the reflected direction stays above the horizon exactly for
+    // tan(theta_h) < 1, which has probability 1 / (1 + alpha^2) under D cos;
+    // there (wo.h) / (mu_o cos(theta_h)) = 1 and G2 < 1 matters only where
+    // mu_i = cos(2 theta_h) < alpha, a band of probability O(alpha^3), so
+    // E(1) = 1 / (1 + alpha^2) - O(alpha^3) (about 1.35 alpha^3). Monte Carlo cannot
+    // see this loss (an event of probability alpha^2); this oracle can.
+    for (Visibility vis : kBoth)
+        for (double alpha : {(0.5 / 128) * (0.5 / 128), 1e-4, 1e-3}) {
+            const Estimate<2> e = ggx_split_sum(1.0, alpha, vis);
+            const double a2 = alpha * alpha;
+            const double expected = 1.0 / (1.0 + a2);
+            const double slack = 2.0 * a2 * alpha + 1e-15;
+            EXPECT_NEAR(e.value[0] + e.value[1], expected, e.error[0] + e.error[1] + slack)
+                << "alpha " << alpha;
+            // The loss itself, to 1%: the quadrature resolves the steep tail.
+            EXPECT_NEAR(1.0 - (e.value[0] + e.value[1]), a2 / (1.0 + a2), 0.01 * a2) << "alpha " << alpha;
+        }
+}
+
 TEST(GgxSplitSum, GrazingLimitIsZero) {
     const Estimate<2> e = ggx_split_sum(0.0, 0.5, Visibility::height_correlated);
     EXPECT_EQ(e.value[0], 0.0);
@@ -124,10 +144,20 @@ TEST(GgxSplitSum, AgreesWithMonteCarloWithinFourStandardErrors) {
         for (double mu : mus)
             for (double alpha : alphas) {
                 const Estimate<2> q = ggx_split_sum(mu, alpha, vis);
-                const Estimate<2> m = ggx_split_sum_mc(mu, alpha, vis, 200000, ++seed);
+                const long long samples = 200000;
+                const Estimate<2> m = ggx_split_sum_mc(mu, alpha, vis, samples, ++seed);
+                // Microfacets steeper than 45 degrees (tan(theta_h) > 1) have
+                // probability alpha^2 / (1 + alpha^2) and carry the energy lost
+                // below the horizon (at normal incidence exactly that much, see
+                // NormalIncidenceLossIsAlphaSquaredForSmallAlpha). When the
+                // samples are not expected to reach them at all, the standard
+                // error cannot account for them; the weights lie in [0, 1], so
+                // what they miss is of the order of that probability.
+                const double steep = alpha * alpha / (1.0 + alpha * alpha);
+                const double unseen = samples * steep < 1e-2 ? 2.0 * steep : 0.0;
                 for (int c = 0; c < 2; ++c) {
                     // Both are estimates: allow the quadrature's own error estimate too.
-                    const double tol = 4.0 * m.error[c] + q.error[c];
+                    const double tol = 4.0 * m.error[c] + q.error[c] + unseen;
                     EXPECT_NEAR(q.value[c], m.value[c], tol)
                         << "mu " << mu << " alpha " << alpha << " channel " << c << " vis " << to_string(vis);
                 }

@@ -29,29 +29,62 @@ namespace {
 // integrand that grows at most like e^x, leaves less than 1e-15.
 constexpr double kHighX = 36.0;
 
-struct SplitSumIntegrand {
-    Ggx ggx;
-    Visibility vis;
-    double mu_o, sin_o;
-    double lambda_o;  // hoisted: Lambda(mu_o) is the same for every h
+// The loosest absolute tolerance of a phi integral. Looser ones let the
+// doubling trapezoid stop before it resolves the narrow dip of G2 where the
+// reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
+constexpr double kMaxInnerTol = 1e-6;
 
-    // Integrand over phi at fixed t = tan(theta_h), without the 1/pi
-    // normalization (applied by the caller): {A, B} parts.
-    std::array<double, 2> at(double t, double cos_phi) const {
+struct SplitSumIntegrand {
+    double alpha2;
+    double mu_o, sin_o;
+    // G2 = k P / (s P + alpha^2 (1 - mu_i^2)), P = 2 mu_i (r + mu_i),
+    // r = sqrt(mu_i^2 + alpha^2 (1 - mu_i^2)): height-correlated
+    // 1 / (1 + Lambda_o + Lambda_i) with s = 1 + Lambda_o, k = 1; separable
+    // G1(o) G1(i) with s = 1, k = G1(o). One square root and one division.
+    double s, k;
+
+    SplitSumIntegrand(const Ggx& ggx, Visibility vis, double mu_o_, double sin_o_)
+        : alpha2(ggx.alpha * ggx.alpha), mu_o(mu_o_), sin_o(sin_o_),
+          s(vis == Visibility::separable ? 1.0 : 1.0 + ggx.lambda(mu_o_)),
+          k(vis == Visibility::separable ? ggx.G1(mu_o_) : 1.0) {}
+
+    // What depends on t = tan(theta_h) only, hoisted out of the phi loop.
+    struct Ring {
+        double a1, a0;     // wo.h = a1 cos(phi) + a0
+        double two_cos_h;  // mu_i = two_cos_h (wo.h) - mu_o
+        double scale;      // 1 / (mu_o cos(theta_h))
+    };
+    Ring ring(double t) const {
         const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
         const double sin_h = t * cos_h;
-        const double o_h = sin_o * sin_h * cos_phi + mu_o * cos_h;
-        const double mu_i = 2.0 * o_h * cos_h - mu_o;
+        return {sin_o * sin_h, mu_o * cos_h, 2.0 * cos_h, 1.0 / (mu_o * cos_h)};
+    }
+
+    // Integrand over phi at fixed t, without the 1/pi normalization (applied
+    // by the caller): {A, B} parts of G2 (wo.h) / (mu_o cos(theta_h)).
+    std::array<double, 2> at(const Ring& q, double cos_phi) const {
+        const double o_h = q.a1 * cos_phi + q.a0;
+        const double mu_i = q.two_cos_h * o_h - mu_o;
         if (mu_i <= 0.0 || o_h <= 0.0) return {0.0, 0.0};
-        const double g2 = vis == Visibility::separable
-                              ? ggx.G1(mu_o) * ggx.G1(mu_i)
-                              : 1.0 / (1.0 + lambda_o + ggx.lambda(mu_i));
-        // (wo.h) / (mu_o cos(theta_h)) = (sin_o t cos(phi) + mu_o) / mu_o
-        const double v = g2 * (sin_o * t * cos_phi + mu_o) / mu_o;
+        const double r = std::sqrt(mu_i * mu_i + alpha2 * (1.0 - mu_i * mu_i));
+        const double p = 2.0 * mu_i * (r + mu_i);
+        const double v = k * p * o_h * q.scale / (s * p + alpha2 * (1.0 - mu_i * mu_i));
         const double fc = schlick_weight(o_h);
         return {v - v * fc, v * fc};
     }
 };
+
+// cos(j pi / 8192), j = 0..8192: the trapezoid nodes on [0, pi] for up to
+// 8192 intervals, computed once.
+constexpr int kCosTableSteps = 8192;
+const std::vector<double>& cos_table() {
+    static const std::vector<double> table = [] {
+        std::vector<double> c(kCosTableSteps + 1);
+        for (int j = 0; j <= kCosTableSteps; ++j) c[static_cast<std::size_t>(j)] = std::cos(j * kPi / kCosTableSteps);
+        return c;
+    }();
+    return table;
+}
 
 }  // namespace
 
@@ -66,7 +99,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     }
     const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
     const Ggx ggx{alpha};
-    const SplitSumIntegrand f{ggx, vis, mu_o, sin_o, ggx.lambda(mu_o)};
+    const SplitSumIntegrand f(ggx, vis, mu_o, sin_o);
+    const std::vector<double>& cosines = cos_table();
     const double ln_alpha = std::log(alpha);
 
     // (1/2) sech^2(x) / pi: the measure in x times the phi normalization,
@@ -76,44 +110,60 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         return 0.5 / (c * c) * kInvPi;
     };
 
-    AdaptiveOptions inner_opt;
-    inner_opt.abs_tol = 0.1 * abs_tol;
+    // Error budget: per region, 0.3 abs_tol for the outer rule and
+    // 0.03 abs_tol for the inner integrals it accumulates (three regions).
     AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.5 * abs_tol;
+    outer_opt.abs_tol = 0.3 * abs_tol;
     outer_opt.controlled = 2;
+    const double inner_budget = 0.03 * abs_tol;
+    // The inner tolerance at an outer node is the budget divided by the
+    // outer weight there times the length of the outer range, so that the
+    // weighted inner errors integrate to at most the budget: far out in the
+    // tail of the distribution, where the weight is tiny, the phi integral
+    // needs far less absolute accuracy. Capped so the inner rule always
+    // resolves something.
+    auto inner_tol = [&](double outer_weight, double span) {
+        const double wt = outer_weight * span;
+        return wt * kMaxInnerTol > inner_budget ? inner_budget / wt : kMaxInnerTol;
+    };
 
     // Integral over phi in [0, phi_max] at fixed t: {A, B, error estimate}.
-    auto over_phi = [&](double t, double phi_max) -> std::array<double, 3> {
+    auto over_phi = [&](double t, double phi_max, double tol) -> std::array<double, 3> {
         if (phi_max >= kPi) {
             // Full circle: the integrand is smooth, even and 2 pi periodic in
             // phi, so the trapezoidal rule converges exponentially; double
             // the nodes until two successive sums agree.
-            auto sample = [&](double phi) { return f.at(t, std::cos(phi)); };
-            std::array<double, 2> ends = sample(0.0), mid = sample(kPi);
+            const SplitSumIntegrand::Ring q = f.ring(t);
+            auto sample = [&](int j) { return f.at(q, cosines[static_cast<std::size_t>(j)]); };
+            std::array<double, 2> ends = sample(0), mid = sample(kCosTableSteps);
             std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
             std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
-            for (int n = 1; n <= 4096; n *= 2) {
+            for (int n = 1; n <= kCosTableSteps / 2; n *= 2) {
                 // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
+                const int stride = kCosTableSteps / n;
                 for (int k = 0; k < n; ++k) {
-                    const std::array<double, 2> y = sample((2 * k + 1) * kPi / (2.0 * n));
+                    const std::array<double, 2> y = sample((2 * k + 1) * stride / 2);
                     sum[0] += y[0];
                     sum[1] += y[1];
                 }
                 const double h = kPi / (2.0 * n);
                 const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
                 const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
-                if (n >= 4 && err <= inner_opt.abs_tol) return {cur[0], cur[1], err};
+                if (n >= 4 && err <= tol) return {cur[0], cur[1], err};
                 prev = cur;
             }
-            return {prev[0], prev[1], inner_opt.abs_tol};
+            return {prev[0], prev[1], tol};
         }
+        AdaptiveOptions inner_opt;
+        inner_opt.abs_tol = tol;
+        const SplitSumIntegrand::Ring q = f.ring(t);
         const Estimate<2> in = integrate_adaptive<2>(
-            [&](double phi) { return f.at(t, std::cos(phi)); }, 0.0, phi_max, inner_opt);
+            [&](double phi) { return f.at(q, std::cos(phi)); }, 0.0, phi_max, inner_opt);
         return {in.value[0], in.value[1], in.error[0] + in.error[1]};
     };
 
-    // Outer integrand in x, weighted: {A, B, accumulated inner error}.
-    auto outer = [&](double x, bool clipped) -> std::array<double, 3> {
+    // Outer integrand in x, weighted by w(x) jac: {A, B, accumulated inner error}.
+    auto outer = [&](double x, bool clipped, double jac, double span) -> std::array<double, 3> {
         const double t = alpha * std::exp(x);
         double phi_max = kPi;
         if (clipped) {
@@ -121,8 +171,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             if (c >= 1.0) return {0.0, 0.0, 0.0};
             if (c > -1.0) phi_max = std::acos(c);
         }
-        std::array<double, 3> r = over_phi(t, phi_max);
-        const double w = weight(x);
+        const double w = weight(x) * jac;
+        std::array<double, 3> r = over_phi(t, phi_max, inner_tol(w, span));
         for (double& v : r) v *= w;
         return r;
     };
@@ -144,18 +194,28 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     {
         const double e2 = std::exp(2.0 * x_split);
         const double xi_end = e2 / (1.0 + e2);
+        const double tol = inner_tol(kInvPi, xi_end);
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));
-                std::array<double, 3> r = over_phi(t, kPi);
+                std::array<double, 3> r = over_phi(t, kPi, tol);
                 for (double& v : r) v *= kInvPi;
                 return r;
             },
             0.0, xi_end, outer_opt));
     }
-    if (x_a > x_split)
-        accumulate(integrate_adaptive<3>([&](double x) { return outer(x, false); }, x_split,
-                                         std::min(x_a, kHighX), outer_opt));
+    if (x_a > x_split) {
+        // Towards x_a the phi integrand develops the dip of G2 at phi = pi, so
+        // the outer integrand is not smooth there either: x = x_a - len (1 - u)^2
+        // flattens that end.
+        const double x_end = std::min(x_a, kHighX), len = x_end - x_split;
+        accumulate(integrate_adaptive<3>(
+            [&](double u) {
+                const double v = 1.0 - u;
+                return outer(x_end - len * v * v, false, 2.0 * len * v, 1.0);
+            },
+            0.0, 1.0, outer_opt));
+    }
     const double p0 = x_a, p1 = std::min(x_b, kHighX);
     if (p1 > p0) {
         // x = p0 + (p1 - p0) s(u), s(u) = 3u^2 - 2u^3: smooth at both ends.
@@ -164,9 +224,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             [&](double u) {
                 const double x = p0 + len * u * u * (3.0 - 2.0 * u);
                 const double jac = len * 6.0 * u * (1.0 - u);
-                std::array<double, 3> r = outer(x, true);
-                for (double& v : r) v *= jac;
-                return r;
+                return outer(x, true, jac, 1.0);
             },
             0.0, 1.0, outer_opt));
     }
@@ -185,13 +243,23 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
     opt.abs_tol = 0.5 * abs_tol / panels;
     opt.controlled = 1;
     Estimate<1> out;
+    auto integrand = [&](double mu) -> std::array<double, 2> {
+        const Estimate<2> s = ggx_split_sum(mu, alpha, vis, 0.25 * abs_tol);
+        return {2.0 * mu * (s.value[0] + s.value[1]), 2.0 * mu * (s.error[0] + s.error[1])};
+    };
     for (std::size_t p = 0; p + 1 < breaks.size(); ++p) {
-        const Estimate<2> e = integrate_adaptive<2>(
-            [&](double mu) -> std::array<double, 2> {
-                const Estimate<2> s = ggx_split_sum(mu, alpha, vis, 0.25 * abs_tol);
-                return {2.0 * mu * (s.value[0] + s.value[1]), 2.0 * mu * (s.error[0] + s.error[1])};
-            },
-            breaks[p], breaks[p + 1], opt);
+        // On the first panel E(mu) behaves like mu ln(mu) near 0 (exactly so
+        // at alpha = 1); mu = b u^2 makes the integrand smooth there.
+        const double b = breaks[p + 1];
+        const Estimate<2> e =
+            p == 0 ? integrate_adaptive<2>(
+                         [&](double u) {
+                             std::array<double, 2> r = integrand(b * u * u);
+                             for (double& v : r) v *= 2.0 * b * u;
+                             return r;
+                         },
+                         0.0, 1.0, opt)
+                   : integrate_adaptive<2>(integrand, breaks[p], b, opt);
         out.value[0] += e.value[0];
         out.error[0] += e.error[0] + e.value[1];
         out.evaluations += e.evaluations;
