@@ -34,6 +34,11 @@ constexpr double kHighX = 36.0;
 // reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
 constexpr double kMaxInnerTol = 1e-6;
 
+// A clipped phi range is integrated in one piece of s = tan(phi / 2) up to
+// s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos.
+constexpr double kMaxTanHalf = 4.0;
+constexpr double kSplitCos = (1.0 - kMaxTanHalf * kMaxTanHalf) / (1.0 + kMaxTanHalf * kMaxTanHalf);
+
 struct SplitSumIntegrand {
     double alpha2;
     double mu_o, sin_o;
@@ -127,52 +132,80 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         return wt * kMaxInnerTol > inner_budget ? inner_budget / wt : kMaxInnerTol;
     };
 
-    // Integral over phi in [0, phi_max] at fixed t: {A, B, error estimate}.
-    auto over_phi = [&](double t, double phi_max, double tol) -> std::array<double, 3> {
-        if (phi_max >= kPi) {
-            // Full circle: the integrand is smooth, even and 2 pi periodic in
-            // phi, so the trapezoidal rule converges exponentially; double
-            // the nodes until two successive sums agree.
-            const SplitSumIntegrand::Ring q = f.ring(t);
-            auto sample = [&](int j) { return f.at(q, cosines[static_cast<std::size_t>(j)]); };
-            std::array<double, 2> ends = sample(0), mid = sample(kCosTableSteps);
-            std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
-            std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
-            for (int n = 1; n <= kCosTableSteps / 2; n *= 2) {
-                // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
-                const int stride = kCosTableSteps / n;
-                for (int k = 0; k < n; ++k) {
-                    const std::array<double, 2> y = sample((2 * k + 1) * stride / 2);
-                    sum[0] += y[0];
-                    sum[1] += y[1];
-                }
-                const double h = kPi / (2.0 * n);
-                const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
-                const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
-                if (n >= 4 && err <= tol) return {cur[0], cur[1], err};
-                prev = cur;
-            }
-            return {prev[0], prev[1], tol};
-        }
-        AdaptiveOptions inner_opt;
-        inner_opt.abs_tol = tol;
+    // Integral over phi in [0, pi] at fixed t: {A, B, error estimate}. The
+    // integrand is smooth, even and 2 pi periodic in phi, so the trapezoidal
+    // rule converges exponentially; double the nodes until two successive
+    // sums agree.
+    auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        const Estimate<2> in = integrate_adaptive<2>(
-            [&](double phi) { return f.at(q, std::cos(phi)); }, 0.0, phi_max, inner_opt);
-        return {in.value[0], in.value[1], in.error[0] + in.error[1]};
+        auto sample = [&](int j) { return f.at(q, cosines[static_cast<std::size_t>(j)]); };
+        std::array<double, 2> ends = sample(0), mid = sample(kCosTableSteps);
+        std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
+        std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
+        for (int n = 1; n <= kCosTableSteps / 2; n *= 2) {
+            // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
+            const int stride = kCosTableSteps / n;
+            for (int k = 0; k < n; ++k) {
+                const std::array<double, 2> y = sample((2 * k + 1) * stride / 2);
+                sum[0] += y[0];
+                sum[1] += y[1];
+            }
+            const double h = kPi / (2.0 * n);
+            const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
+            const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
+            if (n >= 4 && err <= tol) return {cur[0], cur[1], err};
+            prev = cur;
+        }
+        return {prev[0], prev[1], tol};
+    };
+
+    // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
+    // fixed t: {A, B, error estimate}. In s = tan(phi / 2) the integrand is
+    // rational in s (cos(phi) = (1 - s^2) / (1 + s^2), dphi = 2 ds / (1 + s^2)),
+    // so no trigonometric function is evaluated. When phi_max is close to pi
+    // (s large) the range is split at pi / 2 and the far part is done in
+    // pi - phi, so that s stays within [0, 1];
+    // tan(phi_max / 2) = sqrt((1 - c) / (1 + c)).
+    auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 3> {
+        const SplitSumIntegrand::Ring q = f.ring(t);
+        AdaptiveOptions inner_opt;
+        std::array<double, 3> r{};
+        auto add = [&](double sign, double s0, double s1) {
+            const Estimate<2> in = integrate_adaptive<2>(
+                [&](double s) {
+                    const double d = 1.0 / (1.0 + s * s);
+                    std::array<double, 2> y = f.at(q, sign * (1.0 - s * s) * d);
+                    y[0] *= 2.0 * d;
+                    y[1] *= 2.0 * d;
+                    return y;
+                },
+                s0, s1, inner_opt);
+            r[0] += in.value[0];
+            r[1] += in.value[1];
+            r[2] += in.error[0] + in.error[1];
+        };
+        if (c >= kSplitCos) {  // phi_max <= 2 atan(kMaxTanHalf)
+            inner_opt.abs_tol = tol;
+            add(1.0, 0.0, std::sqrt((1.0 - c) / (1.0 + c)));
+        } else {  // [0, pi / 2] and pi - phi in [pi - phi_max, pi / 2]
+            inner_opt.abs_tol = 0.5 * tol;
+            add(1.0, 0.0, 1.0);
+            add(-1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0);
+        }
+        return r;
     };
 
     // Outer integrand in x, weighted by w(x) jac: {A, B, accumulated inner error}.
     auto outer = [&](double x, bool clipped, double jac, double span) -> std::array<double, 3> {
         const double t = alpha * std::exp(x);
-        double phi_max = kPi;
+        double c = -2.0;  // cos(phi_max); -2: the full circle
         if (clipped) {
-            const double c = -mu_o * (1.0 - t * t) / (2.0 * t * sin_o);
+            c = -mu_o * (1.0 - t * t) / (2.0 * t * sin_o);
             if (c >= 1.0) return {0.0, 0.0, 0.0};
-            if (c > -1.0) phi_max = std::acos(c);
         }
         const double w = weight(x) * jac;
-        std::array<double, 3> r = over_phi(t, phi_max, inner_tol(w, span));
+        const double tol = inner_tol(w, span);
+        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, tol) : full_circle(t, tol);
         for (double& v : r) v *= w;
         return r;
     };
@@ -198,7 +231,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));
-                std::array<double, 3> r = over_phi(t, kPi, tol);
+                std::array<double, 3> r = full_circle(t, tol);
                 for (double& v : r) v *= kInvPi;
                 return r;
             },
