@@ -120,6 +120,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     AdaptiveOptions outer_opt;
     outer_opt.abs_tol = 0.3 * abs_tol;
     outer_opt.controlled = 2;
+    outer_opt.rule = KronrodRule::k31;
     const double inner_budget = 0.03 * abs_tol;
     // The inner tolerance at an outer node is the budget divided by the
     // outer weight there times the length of the outer range, so that the
@@ -169,6 +170,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
         AdaptiveOptions inner_opt;
+        inner_opt.rule = KronrodRule::k31;
         std::array<double, 3> r{};
         auto add = [&](double sign, double s0, double s1) {
             const Estimate<2> in = integrate_adaptive<2>(
