@@ -34,6 +34,9 @@ constexpr double kHighX = 36.0;
 // reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
 constexpr double kMaxInnerTol = 1e-6;
 
+// The loosest tolerance of an E(mu) inside E_avg.
+constexpr double kMaxNestedTol = 1e-7;
+
 // A clipped phi range is integrated in one piece of s = tan(phi / 2) up to
 // s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos.
 constexpr double kMaxTanHalf = 4.0;
@@ -267,37 +270,47 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
 }
 
 Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
-    // E(mu) falls from about 1 to 0 where Lambda(mu) ~ 1, that is mu ~ alpha:
-    // break the mu range geometrically from there so that no panel's nodes
-    // can step over the drop.
-    std::vector<double> breaks{0.0};
-    for (double m = alpha; m < 1.0 && alpha > 0.0; m *= 4.0) breaks.push_back(m);
-    breaks.push_back(1.0);
-    const double panels = static_cast<double>(breaks.size() - 1);
-    AdaptiveOptions opt;
-    opt.abs_tol = 0.5 * abs_tol / panels;
-    opt.controlled = 1;
+    // E(mu) falls from about 1 to 0 where Lambda(mu) ~ 1, that is mu ~ alpha,
+    // and varies on the scale of mu itself above that: integrate over
+    // [0, b], b = min(alpha, 1), in mu = b u^2 (E(mu) behaves like mu ln(mu)
+    // near 0, exactly so at alpha = 1; the map makes the integrand smooth),
+    // and over [b, 1] in ln(mu).
     Estimate<1> out;
-    auto integrand = [&](double mu) -> std::array<double, 2> {
-        const Estimate<2> s = ggx_split_sum(mu, alpha, vis, 0.25 * abs_tol);
-        return {2.0 * mu * (s.value[0] + s.value[1]), 2.0 * mu * (s.error[0] + s.error[1])};
+    if (!(alpha > 0.0)) {  // mirror limit: E = 1
+        out.value[0] = 1.0;
+        return out;
+    }
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.25 * abs_tol;
+    opt.controlled = 1;
+    // Each E(mu) is computed to the accuracy its weight 2 mu jac needs, so
+    // that the weighted errors integrate to at most 0.25 abs_tol per range
+    // (span: the length of the range); near mu = 0, where E(mu) is costly and
+    // its weight small, far less work is done.
+    double span = 1.0;
+    auto integrand = [&](double mu, double jac) -> std::array<double, 2> {
+        const double w = 2.0 * mu * jac;
+        const double budget = 0.25 * abs_tol / span;
+        const double tol = w * kMaxNestedTol > budget ? budget / w : kMaxNestedTol;
+        const Estimate<2> s = ggx_split_sum(mu, alpha, vis, tol);
+        return {w * (s.value[0] + s.value[1]), w * (s.error[0] + s.error[1])};
     };
-    for (std::size_t p = 0; p + 1 < breaks.size(); ++p) {
-        // On the first panel E(mu) behaves like mu ln(mu) near 0 (exactly so
-        // at alpha = 1); mu = b u^2 makes the integrand smooth there.
-        const double b = breaks[p + 1];
-        const Estimate<2> e =
-            p == 0 ? integrate_adaptive<2>(
-                         [&](double u) {
-                             std::array<double, 2> r = integrand(b * u * u);
-                             for (double& v : r) v *= 2.0 * b * u;
-                             return r;
-                         },
-                         0.0, 1.0, opt)
-                   : integrate_adaptive<2>(integrand, breaks[p], b, opt);
+    auto accumulate = [&](const Estimate<2>& e) {
         out.value[0] += e.value[0];
         out.error[0] += e.error[0] + e.value[1];
         out.evaluations += e.evaluations;
+    };
+    const double b = std::min(alpha, 1.0);
+    accumulate(integrate_adaptive<2>(
+        [&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0, 1.0, opt));
+    if (b < 1.0) {
+        span = -std::log(b);
+        accumulate(integrate_adaptive<2>(
+            [&](double v) {
+                const double mu = std::exp(v);
+                return integrand(mu, mu);
+            },
+            std::log(b), 0.0, opt));
     }
     return out;
 }
