@@ -15,12 +15,14 @@
 namespace brdflut {
 namespace {
 
-constexpr double kAbsTolerance = kGgxAbsTolerance;
+constexpr double kAbsTolerance = kGgxTableTolerance;
 
 const char* kQuadratureRule =
-    "adaptive Gauss-Kronrod (7,15) over the half vector in x = ln(tan(theta_h)/alpha), "
+    "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), "
     "nested with phi clipped analytically to the upper hemisphere (trapezoidal on the "
-    "full circle); error per value: QUADPACK estimate";
+    "full circle, Gauss-Kronrod (15,31) in tan(phi/2) on clipped ranges); E_avg: adaptive "
+    "Gauss-Kronrod (7,15) in mu; error per value: QUADPACK estimate plus the integrated "
+    "inner estimates";
 const char* kMcSampler = "GGX visible normals (Heitz 2018)";
 
 ModelOption visibility_option() {
