@@ -7,7 +7,7 @@
 //    process (as `brdflut generate ggx_dfg ggx_albedo ggx_albedo_avg` does;
 //    ggx_albedo reuses ggx_dfg's split sums) and prints the wall time of each.
 // 2. Recomputes every S-th texel (along each axis) with the same integrals at
-//    absolute tolerance T (default 1e-12, 1000 times tighter than the tables)
+//    absolute tolerance T (default 1e-12, 10,000 times tighter than the tables)
 //    and prints, per table, the largest difference of the computed values and
 //    of the stored float values, the metadata `error_bound`, and whether every
 //    value's own error estimate covered its difference.
@@ -172,14 +172,22 @@ int main(int argc, char** argv) {
     }
     std::printf("  generate all three      %8.3f s wall %8.3f s cpu\n\n", total, total_cpu);
 
-    std::printf("Reference: the same integrals at abs tolerance %.0e, every %d-th texel per axis\n",
-                ref_tol, stride);
+    std::printf("Reference: the same integrals at abs tolerance %.0e, %s\n", ref_tol,
+                stride == 1 ? "every texel"
+                            : ("every " + std::to_string(stride) + "th texel per axis and the last").c_str());
     std::printf("  %-15s %10s %12s %12s %12s %12s %10s\n", "table", "ref_time", "max|diff|",
                 "stored|diff|", "error_bound", "max_estimate", "uncovered");
     std::vector<double> dfg_ref;
     for (const Timed& r : runs) {
         const auto t0 = std::chrono::steady_clock::now();
-        const std::vector<double> ref = reference(r.table, ref_tol, stride, ref_threads);
+        std::vector<double> ref;
+        if (r.table.id == "ggx_albedo" && !dfg_ref.empty()) {
+            // E = A + B of the same reference split sums.
+            ref.resize(dfg_ref.size() / 2);
+            for (std::size_t k = 0; k < ref.size(); ++k) ref[k] = dfg_ref[2 * k] + dfg_ref[2 * k + 1];
+        } else {
+            ref = reference(r.table, ref_tol, stride, ref_threads);
+        }
         const double ref_seconds = seconds_since(t0);
         const Comparison c = compare(r.table, ref);
         std::printf("  %-15s %9.1fs %12.3e %12.3e %12.3e %12.3e %5zu/%zu\n", r.table.id.c_str(),

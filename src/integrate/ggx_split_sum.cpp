@@ -12,9 +12,17 @@
 //   t <= t_a = mu_o / (1 + sin(theta_o))   every phi    (full circle)
 //   t_a < t < t_b = (1 + sin(theta_o)) / mu_o   |phi| < acos(c(t))
 //   t >= t_b                                      none.
-// Both phi and x are integrated with adaptive Gauss-Kronrod, split at t_a;
-// inside the clipped band the x substitution is made smooth at both ends
-// (the phi integral behaves like (t - t_a)^(3/2) there).
+// The outer variable is integrated with adaptive Gauss-Kronrod (15, 31) in
+// three ranges: up to t = alpha in xi = t^2 / (alpha^2 + t^2) (uniform
+// measure), then in x up to t_a, then across the clipped band; both x ranges
+// are flattened by a change of variable at t_a, where the phi integral
+// behaves like (t - t_a)^(3/2) (and G2 dips where the reflected direction
+// grazes the horizon). The full circle in phi uses the doubling trapezoidal
+// rule (cosines from a table); a clipped range uses Gauss-Kronrod (15, 31)
+// in tan(phi / 2), where the integrand is rational. Each inner integral gets
+// the tolerance its outer weight requires (budget / (weight * range)), and
+// its error estimate is integrated along with the values, so the reported
+// error covers both levels.
 #include "brdflut/ggx_integrals.h"
 
 #include <cmath>
