@@ -45,6 +45,10 @@ constexpr double kMaxInnerTol = 1e-6;
 // The loosest tolerance of an E(mu) inside E_avg.
 constexpr double kMaxNestedTol = 1e-7;
 
+// G2 falls from its plateau to 0 as mu_i drops below about alpha; a clipped
+// phi range is cut where mu_i = kDipWidths alpha (see clipped_circle).
+constexpr double kDipWidths = 8.0;
+
 // A clipped phi range is integrated in one piece of s = tan(phi / 2) up to
 // s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos.
 constexpr double kMaxTanHalf = 4.0;
@@ -197,13 +201,31 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
         };
-        if (c >= kSplitCos) {  // phi_max <= 2 atan(kMaxTanHalf)
-            inner_opt.abs_tol = tol;
-            add(1.0, 0.0, std::sqrt((1.0 - c) / (1.0 + c)));
-        } else {  // [0, pi / 2] and pi - phi in [pi - phi_max, pi / 2]
-            inner_opt.abs_tol = 0.5 * tol;
-            add(1.0, 0.0, 1.0);
-            add(-1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0);
+        // Ranges of cos(phi) in [c, 1], split at 0 when phi_max is close to
+        // pi, and where mu_i = kDipWidths alpha when the dip of G2 (mu_i below
+        // about alpha, next to phi_max) is narrow against the range: the
+        // panels then find it at once instead of by repeated bisection.
+        std::array<double, 4> cuts{c, 1.0, 1.0, 1.0};
+        int n = 1;
+        auto cut = [&](double v) {
+            int k = n;
+            while (k > 0 && cuts[static_cast<std::size_t>(k - 1)] > v) {
+                cuts[static_cast<std::size_t>(k)] = cuts[static_cast<std::size_t>(k - 1)];
+                --k;
+            }
+            cuts[static_cast<std::size_t>(k)] = v;
+            cuts[static_cast<std::size_t>(++n)] = 1.0;
+        };
+        if (c < kSplitCos) cut(0.0);
+        const double dip = kDipWidths * alpha / (q.two_cos_h * q.a1);  // in cos(phi)
+        if (dip < 0.25 * (1.0 - c)) cut(c + dip);
+        inner_opt.abs_tol = tol / n;
+        for (int k = 0; k < n; ++k) {
+            const double lo = cuts[static_cast<std::size_t>(k)], hi = cuts[static_cast<std::size_t>(k + 1)];
+            if (lo >= kSplitCos)  // phi in [acos(hi), acos(lo)], s = tan(phi / 2) <= kMaxTanHalf
+                add(1.0, std::sqrt((1.0 - hi) / (1.0 + hi)), std::sqrt((1.0 - lo) / (1.0 + lo)));
+            else  // hi <= 0: in pi - phi, s = tan((pi - phi) / 2) <= 1
+                add(-1.0, std::sqrt((1.0 + lo) / (1.0 - lo)), std::sqrt((1.0 + hi) / (1.0 - hi)));
         }
         return r;
     };
