@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
 
     std::printf("Reference: the same integrals at abs tolerance %.0e, %s\n", ref_tol,
                 stride == 1 ? "every texel"
-                            : ("every " + std::to_string(stride) + "th texel per axis and the last").c_str());
+                            : ("one texel in " + std::to_string(stride) + " per axis, and the last").c_str());
     std::printf("  %-15s %10s %12s %12s %12s %12s %10s\n", "table", "ref_time", "max|diff|",
                 "stored|diff|", "error_bound", "max_estimate", "uncovered");
     std::vector<double> dfg_ref;

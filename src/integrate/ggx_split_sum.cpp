@@ -41,6 +41,9 @@ constexpr double kHighX = 36.0;
 // doubling trapezoid stop before it resolves the narrow dip of G2 where the
 // reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
 constexpr double kMaxInnerTol = 1e-6;
+// The same for a clipped phi range (adaptive Kronrod panels, whose estimate
+// does not share the trapezoid's blind spot).
+constexpr double kMaxClippedTol = 1e-4;
 
 // The loosest tolerance of an E(mu) inside E_avg.
 constexpr double kMaxNestedTol = 1e-7;
@@ -143,9 +146,9 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // tail of the distribution, where the weight is tiny, the phi integral
     // needs far less absolute accuracy. Capped so the inner rule always
     // resolves something.
-    auto inner_tol = [&](double outer_weight, double span) {
+    auto inner_tol = [&](double outer_weight, double span, double cap = kMaxInnerTol) {
         const double wt = outer_weight * span;
-        return wt * kMaxInnerTol > inner_budget ? inner_budget / wt : kMaxInnerTol;
+        return wt * cap > inner_budget ? inner_budget / wt : cap;
     };
 
     // Integral over phi in [0, pi] at fixed t: {A, B, error estimate}. The
@@ -239,8 +242,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             if (c >= 1.0) return {0.0, 0.0, 0.0};
         }
         const double w = weight(x) * jac;
-        const double tol = inner_tol(w, span);
-        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, tol) : full_circle(t, tol);
+        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol))
+                                           : full_circle(t, inner_tol(w, span));
         for (double& v : r) v *= w;
         return r;
     };
