@@ -25,7 +25,7 @@ void BM_GgxSplitSum(benchmark::State& state) {
     const double mu = grid_mu(state.range(0)), alpha = grid_alpha(state.range(1));
     int evaluations = 0;
     for (auto _ : state) {
-        const Estimate<2> e = ggx_split_sum(mu, alpha, Visibility::height_correlated, kGgxAbsTolerance);
+        const Estimate<2> e = ggx_split_sum(mu, alpha, Visibility::height_correlated, kGgxTableTolerance);
         benchmark::DoNotOptimize(e);
         evaluations = e.evaluations;
     }
@@ -40,7 +40,7 @@ BENCHMARK(BM_GgxSplitSum)
 void BM_GgxAlbedoAverage(benchmark::State& state) {
     const double alpha = grid_alpha(state.range(0));
     for (auto _ : state) {
-        const Estimate<1> e = ggx_albedo_average(alpha, Visibility::height_correlated, kGgxAbsTolerance);
+        const Estimate<1> e = ggx_albedo_average(alpha, Visibility::height_correlated, kGgxTableTolerance);
         benchmark::DoNotOptimize(e);
     }
 }

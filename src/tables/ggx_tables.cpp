@@ -92,7 +92,7 @@ private:
         std::unordered_map<Key, Estimate<2>, KeyHash> map;
     };
     static constexpr std::size_t kShards = 64;
-    static constexpr std::size_t kMaxPerShard = 1 << 14;  // ~1M texels in all
+    static constexpr std::size_t kMaxPerShard = 1 << 12;  // 262,144 texels in all (~25 MB)
     std::array<Shard, kShards> shards_;
 };
 
