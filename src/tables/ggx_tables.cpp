@@ -2,7 +2,11 @@
 //
 // Karis 2013, "Real Shading in Unreal Engine 4" (split-sum approximation)
 // Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks"
+#include <bit>
+#include <cstdint>
 #include <memory>
+#include <mutex>
+#include <unordered_map>
 
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/random.h"
@@ -11,12 +15,14 @@
 namespace brdflut {
 namespace {
 
-constexpr double kAbsTolerance = kGgxAbsTolerance;
+constexpr double kAbsTolerance = kGgxTableTolerance;
 
 const char* kQuadratureRule =
-    "adaptive Gauss-Kronrod (7,15) over the half vector in x = ln(tan(theta_h)/alpha), "
+    "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), "
     "nested with phi clipped analytically to the upper hemisphere (trapezoidal on the "
-    "full circle); error per value: QUADPACK estimate";
+    "full circle, Gauss-Kronrod (15,31) in tan(phi/2) on clipped ranges); E_avg: adaptive "
+    "Gauss-Kronrod (7,15) in mu; error per value: QUADPACK estimate plus the integrated "
+    "inner estimates";
 const char* kMcSampler = "GGX visible normals (Heitz 2018)";
 
 ModelOption visibility_option() {
@@ -37,6 +43,64 @@ nlohmann::json ggx_model(Visibility vis) {
 
 enum class Kind { dfg, albedo, albedo_avg };
 
+// Split sums computed in this process, shared by the tables of one run:
+// ggx_albedo is A + B of ggx_dfg's texels. Keyed by the exact arguments; the
+// integrator is deterministic, so a hit returns bit for bit what a fresh call
+// would: the cache only avoids recomputing, it never changes a value, whatever
+// the thread count or the other tables generated. Sharded to keep lock
+// contention low; bounded (beyond the bound, values are simply recomputed).
+class SplitSumCache {
+public:
+    Estimate<2> get(double mu, double alpha, Visibility vis, double tol) {
+        const Key key{mu, alpha, tol, vis};
+        Shard& shard = shards_[KeyHash{}(key) % kShards];
+        {
+            const std::lock_guard<std::mutex> lock(shard.mutex);
+            const auto it = shard.map.find(key);
+            if (it != shard.map.end()) return it->second;
+        }
+        const Estimate<2> e = ggx_split_sum(mu, alpha, vis, tol);
+        const std::lock_guard<std::mutex> lock(shard.mutex);
+        if (shard.map.size() < kMaxPerShard) shard.map.emplace(key, e);
+        return e;
+    }
+
+private:
+    struct Key {
+        double mu, alpha, tol;
+        Visibility vis;
+        bool operator==(const Key& o) const {
+            return std::bit_cast<std::uint64_t>(mu) == std::bit_cast<std::uint64_t>(o.mu) &&
+                   std::bit_cast<std::uint64_t>(alpha) == std::bit_cast<std::uint64_t>(o.alpha) &&
+                   std::bit_cast<std::uint64_t>(tol) == std::bit_cast<std::uint64_t>(o.tol) &&
+                   vis == o.vis;
+        }
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            std::uint64_t h = static_cast<std::uint64_t>(k.vis) + 0x9e3779b97f4a7c15ULL;
+            for (double d : {k.mu, k.alpha, k.tol}) {
+                h ^= std::bit_cast<std::uint64_t>(d) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+                h *= 0xbf58476d1ce4e5b9ULL;
+                h ^= h >> 31;
+            }
+            return static_cast<std::size_t>(h);
+        }
+    };
+    struct Shard {
+        std::mutex mutex;
+        std::unordered_map<Key, Estimate<2>, KeyHash> map;
+    };
+    static constexpr std::size_t kShards = 64;
+    static constexpr std::size_t kMaxPerShard = 1 << 12;  // 262,144 texels in all (~25 MB)
+    std::array<Shard, kShards> shards_;
+};
+
+SplitSumCache& split_sum_cache() {
+    static SplitSumCache cache;
+    return cache;
+}
+
 class GgxEvaluator final : public TexelEvaluator {
 public:
     GgxEvaluator(Kind kind, Visibility vis, const TableSettings& s)
@@ -56,7 +120,7 @@ public:
         }
         const double mu = c[0], alpha = c[1];
         const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
-                                 : ggx_split_sum(mu, alpha, vis_, kAbsTolerance);
+                                 : split_sum_cache().get(mu, alpha, vis_, kAbsTolerance);
         const double scale = mc ? tables::kMcErrorSigmas : 1.0;
         if (kind_ == Kind::dfg) {
             out.value = {e.value[0], e.value[1], 0.0, 0.0};
