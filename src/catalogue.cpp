@@ -68,7 +68,9 @@ void validate_settings(const TableDefinition& def, const TableSettings& s) {
     if (texels > kMaxTexels)
         throw Error("table '" + def.id + "': " + std::to_string(texels) +
                     " texels is too many; allowed: at most " + std::to_string(kMaxTexels));
-    for (const auto& [name, value] : s.params) {
+    for (const auto& param : s.params) {
+        const std::string& name = param.first;
+        const std::string& value = param.second;
         auto it = std::find_if(def.options.begin(), def.options.end(),
                                [&](const ModelOption& o) { return o.name == name; });
         if (it == def.options.end())

@@ -27,7 +27,10 @@ struct ExrImage {
     nlohmann::json metadata;
 };
 
-// Throws brdflut::RuntimeError naming the file on any failure.
+// Throws brdflut::RuntimeError naming the file on any failure: a missing,
+// truncated or corrupt file, another format, or metadata that is not JSON.
 ExrImage read_exr(const std::string& path);
+// The same for a file's bytes in memory (name is used in messages).
+ExrImage read_exr_memory(const char* data, std::size_t size, const std::string& name);
 
 }  // namespace brdflut

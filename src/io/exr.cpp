@@ -2,7 +2,9 @@
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
+#include <ImfCheckFile.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStringAttribute.h>
@@ -10,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <unistd.h>
 
@@ -86,19 +90,51 @@ void write_exr(const std::string& path, const Table& table, PixelType pixel) {
     file.commit();
 }
 
-ExrImage read_exr(const std::string& path) {
+namespace {
+
+// An OpenEXR input stream over bytes in memory.
+class MemoryStream final : public Imf::IStream {
+public:
+    MemoryStream(const char* data, std::size_t size, const std::string& name)
+        : Imf::IStream(name.c_str()), data_(data), size_(size) {}
+    bool read(char c[], int n) override {
+        if (n < 0 || static_cast<std::uint64_t>(n) > size_ - pos_) throw std::runtime_error("unexpected end of file");
+        std::memcpy(c, data_ + pos_, static_cast<std::size_t>(n));
+        pos_ += static_cast<std::uint64_t>(n);
+        return pos_ < size_;
+    }
+    uint64_t tellg() override { return pos_; }
+    void seekg(uint64_t pos) override {
+        if (pos > size_) throw std::runtime_error("seek past the end of file");
+        pos_ = pos;
+    }
+
+private:
+    const char* data_;
+    std::uint64_t size_;
+    std::uint64_t pos_ = 0;
+};
+
+constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
+
+}  // namespace
+
+ExrImage read_exr_memory(const char* data, std::size_t size, const std::string& name) {
     ExrImage img;
     try {
-        if (!std::filesystem::is_regular_file(path))
-            throw RuntimeError("cannot read '" + path + "': no such file");
-        Imf::InputFile in(path.c_str());
+        // OpenEXR's own checker reads every part of the file defensively
+        // (bounded memory and time) and reports corruption without crashing.
+        if (size < 4 || Imf::checkOpenEXRFile(data, size, true, true, true))
+            throw RuntimeError("cannot read '" + name + "': not a valid OpenEXR file (corrupt, truncated or another format)");
+        MemoryStream stream(data, size, name);
+        Imf::InputFile in(stream);
         const Imf::Header& h = in.header();
         const Imath::Box2i dw = h.dataWindow();
         const long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
         const long long ht = static_cast<long long>(dw.max.y) - dw.min.y + 1;
         if (w < 1 || ht < 1 || w * ht > (1LL << 28))
-            throw RuntimeError("cannot read '" + path + "': image size " + std::to_string(w) +
-                               "x" + std::to_string(ht) + " is not supported");
+            throw RuntimeError("cannot read '" + name + "': image size " + std::to_string(w) + "x" +
+                               std::to_string(ht) + " is not supported");
         img.width = static_cast<int>(w);
         img.height = static_cast<int>(ht);
         // R, G, B, A first in that order, then any other channels by name.
@@ -107,11 +143,14 @@ ExrImage read_exr(const std::string& path) {
             if (h.channels().findChannel(c)) names.push_back(c);
         bool any_half = false;
         for (auto it = h.channels().begin(); it != h.channels().end(); ++it) {
-            const std::string name = it.name();
+            const std::string cname = it.name();
             if (it.channel().type == Imf::HALF) any_half = true;
-            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+            if (it.channel().xSampling != 1 || it.channel().ySampling != 1)
+                throw RuntimeError("cannot read '" + name + "': channel '" + cname + "' is subsampled");
+            if (std::find(names.begin(), names.end(), cname) == names.end()) names.push_back(cname);
         }
-        if (names.empty()) throw RuntimeError("cannot read '" + path + "': no channels");
+        if (names.empty()) throw RuntimeError("cannot read '" + name + "': no channels");
+        if (names.size() > 64) throw RuntimeError("cannot read '" + name + "': too many channels");
         img.channel_names = names;
         img.pixel = any_half ? PixelType::half : PixelType::float32;
         const std::size_t nc = names.size();
@@ -135,11 +174,25 @@ ExrImage read_exr(const std::string& path) {
     } catch (const RuntimeError&) {
         throw;
     } catch (const nlohmann::json::exception& e) {
-        throw RuntimeError("cannot read '" + path + "': metadata is not valid JSON: " + e.what());
+        throw RuntimeError("cannot read '" + name + "': metadata is not valid JSON: " + e.what());
     } catch (const std::exception& e) {
-        throw RuntimeError("cannot read '" + path + "': " + e.what());
+        throw RuntimeError("cannot read '" + name + "': " + e.what());
     }
     return img;
+}
+
+ExrImage read_exr(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw RuntimeError("cannot read '" + path + "': no such file");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) throw RuntimeError("cannot read '" + path + "': " + ec.message());
+    if (size > kMaxFileBytes) throw RuntimeError("cannot read '" + path + "': larger than 1 GiB");
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> bytes(static_cast<std::size_t>(size));
+    if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
+        throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+    return read_exr_memory(bytes.data(), bytes.size(), path);
 }
 
 }  // namespace brdflut

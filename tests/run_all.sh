@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# The whole test suite, after the README's main command has built ./build:
+#   1. the unit, table and command-line tests of the Release build;
+#   2. the same suite built with AddressSanitizer and UndefinedBehaviorSanitizer
+#      (CMake preset `sanitize`);
+#   3. a bounded libFuzzer run on the table reader (preset `fuzz`, clang),
+#      seeded from tests/fuzz/corpus (BRDFLUT_FUZZ_SECONDS, default 60).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=${BRDFLUT_JOBS:-2}
+log=$(mktemp -d)
+trap 'rm -rf "$log"' EXIT
+
+count() {  # "N tests passed" summary of a ctest log -> "passed failed"
+    sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$1" | tail -n 1
+}
+
+echo "== Release build: ctest"
+ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release.txt"
+
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer: build and ctest"
+cmake --preset sanitize > "$log/sanitize-configure.txt"
+cmake --build --preset sanitize -j"$jobs" > "$log/sanitize-build.txt" || { tail -n 50 "$log/sanitize-build.txt"; exit 1; }
+ctest --preset sanitize -j"$jobs" | tee "$log/sanitize.txt"
+
+echo "== libFuzzer on the table reader"
+cmake --preset fuzz > "$log/fuzz-configure.txt"
+cmake --build --preset fuzz -j"$jobs" > "$log/fuzz-build.txt" || { tail -n 50 "$log/fuzz-build.txt"; exit 1; }
+mkdir -p "$log/corpus"
+./build-fuzz/fuzz_read_table -max_total_time="${BRDFLUT_FUZZ_SECONDS:-60}" -seed=1 -timeout=10 \
+    -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 "$log/corpus" tests/fuzz/corpus 2> "$log/fuzz.txt" ||
+    { tail -n 60 "$log/fuzz.txt"; exit 1; }
+grep -E "^(Done|stat::number_of_executed_units)" "$log/fuzz.txt" || true
+
+read -r rf rt <<< "$(count "$log/release.txt")"
+read -r sf st <<< "$(count "$log/sanitize.txt")"
+passed=$(( (rt - rf) + (st - sf) + 1 ))
+failed=$(( rf + sf ))
+echo "Release: $((rt - rf)) of $rt passed; sanitizers: $((st - sf)) of $st passed; fuzzing: no crash"
+echo "tests: $passed passed, $failed failed"
