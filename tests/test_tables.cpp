@@ -117,7 +117,8 @@ TEST(Quality, IsRecordedAndSetsTheToleranceAndDraftEstimatesAreHonest) {
         const double reference = t.at(Quality::reference).method.at("abs_tolerance");
         EXPECT_GT(draft, standard) << id;
         EXPECT_LE(standard, 1e-8) << id;
-        EXPECT_LE(reference, 1e-3 * standard) << id;
+        EXPECT_LE(reference, 1e-12) << id;
+        EXPECT_LE(reference, 1e-2 * standard) << id;
         const Table& ref = t.at(Quality::reference);
         for (Quality q : {Quality::draft, Quality::standard}) {
             const Table& a = t.at(q);

@@ -241,22 +241,31 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
             0.0, p_a, outer_opt));
     }
     if (sin_o > 0.0) {
+        constexpr int kPieces = 4;
+        AdaptiveOptions piece_opt = outer_opt;
+        piece_opt.abs_tol = outer_opt.abs_tol / kPieces;
+        piece_opt.rule = KronrodRule::k15;
         // Across the clipped band the phi integral behaves like (t - t_a)^(3/2)
         // at its start; P = p_a + len s(u) with the smoothstep s flattens both ends.
         const double p_b = p_of_t(band.t_b), len = p_b - p_a;
-        accumulate(integrate_adaptive<2>(
-            [&](double u) -> std::array<double, 2> {
-                const double t = t_of_p(p_a + len * smoothstep(u));
-                const double c = reflection_cos_phi_max(t, mu_o, sin_o);
-                if (c >= 1.0) return {0.0, 0.0};
-                const double w = len * smoothstep_slope(u) * kInvPi;
-                if (!(w > 0.0)) return {0.0, 0.0};
-                const double tol = inner_tol(w);
-                const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
-                                                         : full_circle(t, tol);
-                return {r[0] * w, r[1] * w};
-            },
-            0.0, 1.0, outer_opt));
+        // Four pieces of Gauss-Kronrod (7, 15): single (15, 31) panels missed
+        // the narrow tail near t_b at grazing angles (by 1.5e-9 against an
+        // estimate of 3e-11); this choice covers every default texel.
+        for (int k = 0; k < kPieces; ++k) {
+            accumulate(integrate_adaptive<2>(
+                [&](double u) -> std::array<double, 2> {
+                    const double t = t_of_p(p_a + len * smoothstep(u));
+                    const double c = reflection_cos_phi_max(t, mu_o, sin_o);
+                    if (c >= 1.0) return {0.0, 0.0};
+                    const double w = len * smoothstep_slope(u) * kInvPi;
+                    if (!(w > 0.0)) return {0.0, 0.0};
+                    const double tol = inner_tol(w);
+                    const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
+                                                             : full_circle(t, tol);
+                    return {r[0] * w, r[1] * w};
+                },
+                static_cast<double>(k) / kPieces, static_cast<double>(k + 1) / kPieces, piece_opt));
+        }
     }
     return out;
 }
