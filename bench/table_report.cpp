@@ -1,32 +1,40 @@
-// Timed generation of the GGX tables at default settings, and their largest
-// error against a much finer reference run.
+// Timed generation of every table of the catalogue at default settings, its
+// largest error against a reference-quality run, peak memory, and ggx_dfg
+// against Monte Carlo.
 //
-//   brdflut_table_report [--reference-tol T] [--stride S] [--threads N] [--no-mc]
+//   brdflut_table_report [--threads N] [--quality draft|default|reference]
+//                        [--no-reference] [--no-mc] [--mc-samples M]
 //
-// 1. Generates ggx_dfg, ggx_albedo and ggx_albedo_avg in this order in one
-//    process (as `brdflut generate ggx_dfg ggx_albedo ggx_albedo_avg` does;
-//    ggx_albedo reuses ggx_dfg's split sums) and prints the wall time of each.
-// 2. Recomputes every S-th texel (along each axis) with the same integrals at
-//    absolute tolerance T (default 1e-12, 10,000 times tighter than the tables)
-//    and prints, per table, the largest difference of the computed values and
-//    of the stored float values, the metadata `error_bound`, and whether every
-//    value's own error estimate covered its difference.
-// 3. Unless --no-mc: generates ggx_dfg with --method mc --samples 1024 and
-//    prints its wall time and largest difference to the same reference.
+// 1. Generates every table of the catalogue in catalogue order in one process
+//    (as `brdflut generate --all` does; ggx_albedo reuses ggx_dfg's split sums)
+//    and prints the wall and CPU time of each and of all, and the peak
+//    resident memory of the process at that point.
+// 2. Unless --no-reference: generates every table again with --quality
+//    reference (absolute tolerance 1e-12 or tighter, at least 100 times
+//    tighter than the default) and prints, per table, the largest difference
+//    of the computed values and of the stored float values to it, the
+//    metadata `error_bound`, and how many values' own error estimates failed
+//    to cover their difference. Closed-form tables are their own reference
+//    (their accuracy is checked by the tests against independent quadrature).
+// 3. Unless --no-mc: generates ggx_dfg with --method mc at 1024 samples per
+//    texel and at M (default 16384) and compares both with the reference;
+//    the error of the mean falls as 1/sqrt(N), so the samples needed for a
+//    largest error of 1e-4 and their time are extrapolated from the M run.
+#include <sys/resource.h>
+
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/generate.h"
-#include "brdflut/ggx_integrals.h"
 #include "brdflut/table.h"
 
 using namespace brdflut;
@@ -40,16 +48,25 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // CPU time of the whole process (all threads), in seconds.
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
+// Peak resident memory of the process so far, in MB.
+double peak_rss_mb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_maxrss) / 1024.0;
+}
+
 struct Timed {
     Table table;
     double seconds;      // wall
     double cpu_seconds;  // all threads
 };
 
-Timed timed_generate(const std::string& id, Method method, long long samples, int threads) {
+Timed timed_generate(const std::string& id, Method method, Quality quality, long long samples,
+                     int threads) {
     const TableDefinition& def = find_table(id);
     TableSettings s = default_settings(def);
     s.method = method;
+    s.quality = quality;
     s.samples = samples;
     GenerateOptions opt;
     opt.threads = threads;
@@ -60,52 +77,6 @@ Timed timed_generate(const std::string& id, Method method, long long samples, in
     return {std::move(t), wall, cpu_seconds() - c0};
 }
 
-// Runs body(k) for k in [0, n) on `threads` threads; each k writes its own slot.
-template <class F>
-void parallel_for_each(std::size_t n, int threads, F body) {
-    std::atomic<std::size_t> next{0};
-    std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i)
-        pool.emplace_back([&] {
-            for (std::size_t k; (k = next.fetch_add(1)) < n;) body(k);
-        });
-    for (auto& th : pool) th.join();
-}
-
-// Reference values of the texels sampled with `stride`, in the table's
-// channel layout; unsampled texels are NaN.
-std::vector<double> reference(const Table& t, double tol, int stride, int threads) {
-    const Visibility vis = visibility_from_string(t.model.at("visibility").get<std::string>());
-    const std::size_t nc = t.channels.size();
-    std::vector<double> ref(t.values.size(), std::nan(""));
-    std::vector<std::size_t> texels;
-    for (std::size_t k = 0; k < t.texel_count(); ++k) {
-        const int i = static_cast<int>(k % static_cast<std::size_t>(t.axes[0].count));
-        const int j = static_cast<int>(k / static_cast<std::size_t>(t.axes[0].count));
-        // Always include the last index of each axis (grazing, roughest).
-        const bool ci = i % stride == 0 || i == t.axes[0].count - 1;
-        const bool cj = t.axes.size() == 1 || j % stride == 0 || j == t.axes[1].count - 1;
-        if (ci && cj) texels.push_back(k);
-    }
-    parallel_for_each(texels.size(), threads, [&](std::size_t n) {
-        const std::size_t k = texels[n];
-        const int i = static_cast<int>(k % static_cast<std::size_t>(t.axes[0].count));
-        if (t.id == "ggx_albedo_avg") {
-            ref[k] = ggx_albedo_average(t.axes[0].value(i), vis, tol).value[0];
-            return;
-        }
-        const int j = static_cast<int>(k / static_cast<std::size_t>(t.axes[0].count));
-        const Estimate<2> e = ggx_split_sum(t.axes[0].value(i), t.axes[1].value(j), vis, tol);
-        if (nc == 2) {
-            ref[k * 2] = e.value[0];
-            ref[k * 2 + 1] = e.value[1];
-        } else {
-            ref[k] = e.value[0] + e.value[1];
-        }
-    });
-    return ref;
-}
-
 struct Comparison {
     double max_diff = 0.0;         // computed (double) values
     double max_stored_diff = 0.0;  // values rounded to float
@@ -113,27 +84,29 @@ struct Comparison {
     std::size_t compared = 0, uncovered = 0;  // estimate < difference
 };
 
-Comparison compare(const Table& t, const std::vector<double>& ref) {
+Comparison compare(const Table& t, const Table& ref) {
     Comparison c;
     for (std::size_t n = 0; n < t.values.size(); ++n) {
         c.max_estimate = std::max(c.max_estimate, t.errors[n]);
-        if (std::isnan(ref[n])) continue;
-        const double d = std::abs(t.values[n] - ref[n]);
+        const double d = std::abs(t.values[n] - ref.values[n]);
         c.max_diff = std::max(c.max_diff, d);
-        c.max_stored_diff =
-            std::max(c.max_stored_diff, std::abs(round_to_storage(t.values[n], PixelType::float32) - ref[n]));
+        c.max_stored_diff = std::max(
+            c.max_stored_diff, std::abs(round_to_storage(t.values[n], PixelType::float32) - ref.values[n]));
         ++c.compared;
         if (d > t.errors[n] + 1e-15) ++c.uncovered;
     }
     return c;
 }
 
+std::string method_name(const Table& t) { return t.method.value("name", std::string("?")); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    double ref_tol = 1e-12;
-    int stride = 1, threads = 0;
-    bool mc = true;
+    int threads = 0;
+    long long mc_samples = 16384;
+    bool mc = true, with_reference = true;
+    Quality quality = Quality::standard;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
         auto next = [&]() -> const char* {
@@ -143,65 +116,87 @@ int main(int argc, char** argv) {
             }
             return argv[++a];
         };
-        if (arg == "--reference-tol") ref_tol = std::atof(next());
-        else if (arg == "--stride") stride = std::max(1, std::atoi(next()));
-        else if (arg == "--threads") threads = std::max(0, std::atoi(next()));
+        if (arg == "--threads") threads = std::max(0, std::atoi(next()));
+        else if (arg == "--quality") quality = quality_from_string(next());
+        else if (arg == "--no-reference") with_reference = false;
         else if (arg == "--no-mc") mc = false;
+        else if (arg == "--mc-samples") mc_samples = std::max(1024LL, std::atoll(next()));
         else {
             std::fprintf(stderr,
-                         "usage: brdflut_table_report [--reference-tol T] [--stride S] "
-                         "[--threads N] [--no-mc]\n");
+                         "usage: brdflut_table_report [--threads N] [--quality Q] [--no-reference] "
+                         "[--no-mc] [--mc-samples M]\n");
             return 2;
         }
     }
-    const int ref_threads =
-        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (mc) with_reference = true;  // the Monte Carlo errors need the reference
 
-    std::printf("GGX tables at default settings, %s threads (hardware: %u)\n",
+    std::printf("Every table at %s quality, %s threads (hardware: %u)\n",
+                std::string(to_string(quality)).c_str(),
                 threads > 0 ? std::to_string(threads).c_str() : "all",
                 std::thread::hardware_concurrency());
-    const char* ids[] = {"ggx_dfg", "ggx_albedo", "ggx_albedo_avg"};
     std::vector<Timed> runs;
     double total = 0.0, total_cpu = 0.0;
-    for (const char* id : ids) {
-        runs.push_back(timed_generate(id, Method::quadrature, 0, threads));
+    const auto t_all = std::chrono::steady_clock::now();
+    for (const TableDefinition& d : catalogue()) {
+        runs.push_back(timed_generate(d.id, Method::quadrature, quality, 0, threads));
         total += runs.back().seconds;
         total_cpu += runs.back().cpu_seconds;
-        std::printf("  generate %-15s %8.3f s wall %8.3f s cpu\n", id, runs.back().seconds,
+        std::printf("  generate %-30s %8.3f s wall %8.3f s cpu\n", d.id.c_str(), runs.back().seconds,
                     runs.back().cpu_seconds);
     }
-    std::printf("  generate all three      %8.3f s wall %8.3f s cpu\n\n", total, total_cpu);
+    std::printf("  generate all %-2zu tables             %8.3f s wall %8.3f s cpu (%.3f s wall "
+                "with bookkeeping)\n",
+                runs.size(), total, total_cpu, seconds_since(t_all));
+    std::printf("  peak resident memory so far: %.1f MB\n\n", peak_rss_mb());
+    if (!with_reference) return 0;
 
-    std::printf("Reference: the same integrals at abs tolerance %.0e, %s\n", ref_tol,
-                stride == 1 ? "every texel"
-                            : ("one texel in " + std::to_string(stride) + " per axis, and the last").c_str());
-    std::printf("  %-15s %10s %12s %12s %12s %12s %10s\n", "table", "ref_time", "max|diff|",
-                "stored|diff|", "error_bound", "max_estimate", "uncovered");
-    std::vector<double> dfg_ref;
+    std::printf("Reference: every table at quality reference, every texel\n");
+    std::printf("  %-30s %-12s %9s %10s %12s %12s %12s %12s %12s\n", "table", "method", "ref_wall",
+                "ref_tol", "max|diff|", "stored|diff|", "error_bound", "max_estimate", "uncovered");
+    std::map<std::string, Table> references;
     for (const Timed& r : runs) {
-        const auto t0 = std::chrono::steady_clock::now();
-        std::vector<double> ref;
-        if (r.table.id == "ggx_albedo" && !dfg_ref.empty()) {
-            // E = A + B of the same reference split sums.
-            ref.resize(dfg_ref.size() / 2);
-            for (std::size_t k = 0; k < ref.size(); ++k) ref[k] = dfg_ref[2 * k] + dfg_ref[2 * k + 1];
-        } else {
-            ref = reference(r.table, ref_tol, stride, ref_threads);
-        }
-        const double ref_seconds = seconds_since(t0);
-        const Comparison c = compare(r.table, ref);
-        std::printf("  %-15s %9.1fs %12.3e %12.3e %12.3e %12.3e %5zu/%zu\n", r.table.id.c_str(),
-                    ref_seconds, c.max_diff, c.max_stored_diff,
-                    error_bound(r.table, PixelType::float32), c.max_estimate, c.uncovered, c.compared);
-        if (r.table.id == "ggx_dfg") dfg_ref = ref;
+        const Timed ref = timed_generate(r.table.id, Method::quadrature, Quality::reference, 0, threads);
+        const Comparison c = compare(r.table, ref.table);
+        const double ref_tol = ref.table.method.value("abs_tolerance", 0.0);
+        std::printf("  %-30s %-12s %8.2fs %10.0e %12.3e %12.3e %12.3e %12.3e %6zu/%zu\n",
+                    r.table.id.c_str(), method_name(r.table).c_str(), ref.seconds, ref_tol, c.max_diff,
+                    c.max_stored_diff, error_bound(r.table, PixelType::float32), c.max_estimate,
+                    c.uncovered, c.compared);
+        references.emplace(r.table.id, ref.table);
     }
 
     if (mc) {
-        const Timed m = timed_generate("ggx_dfg", Method::monte_carlo, 1024, threads);
-        const Comparison c = compare(m.table, dfg_ref);
-        std::printf("\nggx_dfg --method mc --samples 1024: %.3f s wall %.3f s cpu, max|diff| %.3e, "
-                    "error_bound (4 standard errors + rounding) %.3e\n",
-                    m.seconds, m.cpu_seconds, c.max_diff, error_bound(m.table, PixelType::float32));
+        const Table& ref = references.at("ggx_dfg");
+        const Timed& quad = *std::find_if(runs.begin(), runs.end(),
+                                          [](const Timed& t) { return t.table.id == "ggx_dfg"; });
+        const Comparison cq = compare(quad.table, ref);
+        std::printf("\nggx_dfg 128x128 against the reference:\n");
+        std::printf("  %-28s %10s %10s %12s %12s\n", "run", "wall", "cpu", "max|diff|", "stored|diff|");
+        std::printf("  %-28s %9.3fs %9.3fs %12.3e %12.3e\n", "quadrature (default)", quad.seconds,
+                    quad.cpu_seconds, cq.max_diff, cq.max_stored_diff);
+        std::vector<std::pair<long long, Timed>> mcs;
+        for (long long n : {1024LL, mc_samples}) {
+            if (!mcs.empty() && n == mcs.back().first) break;
+            mcs.emplace_back(n, timed_generate("ggx_dfg", Method::monte_carlo, quality, n, threads));
+            const Comparison c = compare(mcs.back().second.table, ref);
+            std::printf("  %-28s %9.3fs %9.3fs %12.3e %12.3e\n",
+                        ("mc, " + std::to_string(n) + " samples").c_str(), mcs.back().second.seconds,
+                        mcs.back().second.cpu_seconds, c.max_diff, c.max_stored_diff);
+        }
+        const Timed& m1 = mcs.front().second;
+        const double e1 = compare(m1.table, ref).max_diff;
+        const auto& [n_big, m_big] = mcs.back();
+        const double e_big = compare(m_big.table, ref).max_diff;
+        const double n_needed = static_cast<double>(n_big) * (e_big / 1e-4) * (e_big / 1e-4);
+        const double scale = n_needed / static_cast<double>(n_big);
+        std::printf("  %-28s %9.0fs %9.0fs %12.1e %12s   (extrapolated from the %lld-sample run: "
+                    "N = %.2e)\n",
+                    "mc, error 1e-4", m_big.seconds * scale, m_big.cpu_seconds * scale, 1e-4, "",
+                    n_big, n_needed);
+        std::printf("  ratios quadrature / mc 1024: wall %.3f, cpu %.3f, error %.2e\n",
+                    quad.seconds / m1.seconds, quad.cpu_seconds / m1.cpu_seconds, cq.max_diff / e1);
+        std::printf("  ratios quadrature / mc 1e-4: wall %.2e, cpu %.2e\n",
+                    quad.seconds / (m_big.seconds * scale), quad.cpu_seconds / (m_big.cpu_seconds * scale));
     }
     return 0;
 }

@@ -17,6 +17,22 @@ Method method_from_string(std::string_view s) {
     throw Error("method '" + std::string(s) + "' is not known; allowed: quadrature, mc");
 }
 
+std::string_view to_string(Quality q) {
+    switch (q) {
+        case Quality::draft: return "draft";
+        case Quality::standard: return "default";
+        case Quality::reference: return "reference";
+    }
+    return "default";
+}
+
+Quality quality_from_string(std::string_view s) {
+    if (s == "draft") return Quality::draft;
+    if (s == "default") return Quality::standard;
+    if (s == "reference") return Quality::reference;
+    throw Error("--quality '" + std::string(s) + "' is not known; allowed: draft, default, reference");
+}
+
 std::string_view to_string(PixelType p) { return p == PixelType::half ? "half" : "float"; }
 
 PixelType pixel_type_from_string(std::string_view s) {

@@ -32,6 +32,15 @@ TEST(Cli, GenerateWritesTheTableIntoANewFolder) {
     EXPECT_NE(r.out.find("ggx_dfg.exr"), std::string::npos);
 }
 
+TEST(Cli, QualityIsRecordedInTheMetadata) {
+    TempDir dir;
+    const auto r = run_cli("generate ggx_albedo_avg --size 4 --quality draft -q -o '" + dir.path().string() + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto img = brdflut::read_exr(dir / "ggx_albedo_avg.exr");
+    EXPECT_EQ(img.metadata.at("method").at("quality"), "draft");
+    EXPECT_EQ(img.metadata.at("method").at("abs_tolerance"), 1e-5);
+}
+
 TEST(Cli, GenerateWithHalfPixelsAndNonSquareSize) {
     TempDir dir;
     const auto r = run_cli("generate ggx_albedo --size 8x4 --pixel half -q -o '" + dir.path().string() + "'", dir);
@@ -59,6 +68,7 @@ TEST(Cli, BadValuesGiveAClearErrorAndNonZeroExit) {
         {"generate ggx_dfg --range alpha=0:2", "outside the model's domain"},
         {"generate ggx_dfg --count eta=4", "no requested table has an axis named 'eta'"},
         {"generate ggx_dfg --method mc --samples 0", "--samples 0"},
+        {"generate ggx_dfg --quality best", "allowed: draft, default, reference"},
         {"generate ggx_dfg --threads -1", "--threads -1"},
         {"generate", "no table given"},
         {"frobnicate", "frobnicate"},

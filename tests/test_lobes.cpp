@@ -162,6 +162,19 @@ TEST(Lobes, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
             }
 }
 
+TEST(DisneyClearcoat, ErrorEstimateIsHonestOnADenseGridDownToGrazing) {
+    // The clearcoat's rule (trapezoid on full circles, clipped arcs in
+    // tan(phi/2), K31 over P) across gloss and view angles, grazing included.
+    for (double g : {0.5 / 128, 0.2, 0.45, 0.7, 0.85, 127.5 / 128})
+        for (double mu : {kGrazing, 0.01, 0.03, 0.08, 0.2, 0.35, 0.6, 0.91, 0.995}) {
+            const Estimate<1> e = lobe_albedo(Lobe::disney_clearcoat, mu, g, 1e-9);
+            const Estimate<1> ref = lobe_albedo(Lobe::disney_clearcoat, mu, g, 1e-13);
+            EXPECT_LE(std::abs(e.value[0] - ref.value[0]), e.error[0] + 1e-14)
+                << "g " << g << " mu " << mu;
+            EXPECT_LE(e.error[0], 1e-9) << "g " << g << " mu " << mu;
+        }
+}
+
 TEST(Lobes, AverageErrorEstimateBoundsTheDifferenceToAFinerRun) {
     for (Lobe lobe : {Lobe::disney_subsurface, Lobe::disney_sheen, Lobe::disney_clearcoat,
                       Lobe::oren_nayar, Lobe::eon})

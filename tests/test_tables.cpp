@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
@@ -100,6 +101,40 @@ TEST(Generate, SameBytesForAnyThreadCount) {
         EXPECT_EQ(a, test::read_file(dir / (id + "2.exr"))) << id;
         EXPECT_EQ(a, test::read_file(dir / (id + "0.exr"))) << id;
     }
+}
+
+TEST(Quality, IsRecordedAndSetsTheToleranceAndDraftEstimatesAreHonest) {
+    for (const std::string id : {"ggx_dfg", "disney_clearcoat_albedo", "fresnel_dielectric_avg"}) {
+        std::map<Quality, Table> t;
+        for (Quality q : {Quality::draft, Quality::standard, Quality::reference}) {
+            TableSettings s = small(id, 6);
+            s.quality = q;
+            t.emplace(q, generate(find_table(id), s));
+            EXPECT_EQ(t.at(q).method.at("quality"), std::string(to_string(q))) << id;
+        }
+        const double draft = t.at(Quality::draft).method.at("abs_tolerance");
+        const double standard = t.at(Quality::standard).method.at("abs_tolerance");
+        const double reference = t.at(Quality::reference).method.at("abs_tolerance");
+        EXPECT_GT(draft, standard) << id;
+        EXPECT_LE(standard, 1e-8) << id;
+        EXPECT_LE(reference, 1e-12) << id;
+        EXPECT_LT(reference, standard) << id;
+        const Table& ref = t.at(Quality::reference);
+        for (Quality q : {Quality::draft, Quality::standard}) {
+            const Table& a = t.at(q);
+            for (std::size_t n = 0; n < a.values.size(); ++n) {
+                EXPECT_LE(std::abs(a.values[n] - ref.values[n]), a.errors[n] + 1e-14)
+                    << id << " " << to_string(q) << " value " << n;
+                EXPECT_LE(a.errors[n], to_string(q) == "draft" ? draft : standard) << id << " " << n;
+            }
+        }
+    }
+    // Closed forms ignore it but say which was asked for.
+    TableSettings s = small("fresnel_dielectric", 4);
+    s.quality = Quality::draft;
+    EXPECT_EQ(generate(find_table("fresnel_dielectric"), s).method.at("quality"), "draft");
+    EXPECT_EQ(quality_from_string("default"), Quality::standard);
+    EXPECT_THROW(quality_from_string("best"), Error);
 }
 
 TEST(Exr, RoundTripKeepsValuesAndMetadataDescribesEveryTexel) {

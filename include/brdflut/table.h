@@ -17,11 +17,21 @@ enum class Method { quadrature, monte_carlo };
 std::string_view to_string(Method m);
 Method method_from_string(std::string_view s);  // throws brdflut::Error
 
+// How hard the quadrature works. Each table family maps a quality to its own
+// absolute tolerance (recorded in the metadata's `method`): `draft` about 1e-5
+// (previews), `standard` (spelled "default") 1e-8 to 1e-11, so that every
+// stored float is within 1e-7 of the exact integral, `reference` 1e-12 or
+// tighter (checking the others). Closed-form tables ignore it.
+enum class Quality { draft, standard, reference };
+std::string_view to_string(Quality q);
+Quality quality_from_string(std::string_view s);  // throws brdflut::Error
+
 // What a user may change about a table. Start from default_settings(def).
 struct TableSettings {
     std::vector<Axis> axes;                     // x, y[, z]
     std::map<std::string, std::string> params;  // model options, e.g. visibility
     Method method = Method::quadrature;
+    Quality quality = Quality::standard;        // quadrature only
     long long samples = 4096;                   // per texel, Monte Carlo only
     std::uint64_t seed = 1;                     // Monte Carlo only
 };

@@ -15,6 +15,10 @@ void add_table_options(CLI::App& app, TableArgs& a, bool methods) {
     if (methods) {
         app.add_option("--method", a.method, "Integration: quadrature (deterministic) or mc (Monte Carlo)")
             ->capture_default_str();
+        app.add_option("--quality", a.quality,
+                       "Quadrature effort: draft (abs tolerance ~1e-5), default (every stored "
+                       "float within 1e-7), reference (~1e-12); recorded in the metadata")
+            ->capture_default_str();
         app.add_option("--samples", a.samples, "Samples per texel with --method mc")->capture_default_str();
         app.add_option("--seed", a.seed, "Seed with --method mc")->capture_default_str();
     }
@@ -134,6 +138,7 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
         }
     }
     s.method = method_from_string(a.method);
+    s.quality = quality_from_string(a.quality);
     s.samples = a.samples;
     s.seed = a.seed;
     return s;

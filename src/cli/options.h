@@ -20,6 +20,7 @@ struct TableArgs {
     std::string size;  // "N" or "NxM"
     std::vector<std::string> ranges, counts, placements, warps;
     std::string method = "quadrature";
+    std::string quality = "default";  // draft | default | reference
     long long samples = 4096;
     unsigned long long seed = 1;
     std::map<std::string, std::string> option_values;  // every model option's flag
@@ -28,7 +29,7 @@ struct TableArgs {
 
 // Adds --size, --range, --count, --placement, --warp and a --<name> flag for
 // every model option of the catalogue. With methods, also --method,
-// --samples and --seed.
+// --quality, --samples and --seed.
 void add_table_options(CLI::App& app, TableArgs& a, bool methods);
 
 // After parsing: collects the model options given on the command line.

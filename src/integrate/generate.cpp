@@ -28,6 +28,9 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     t.channels = def.channels;
     t.model = prepared.model;
     t.method = prepared.method;
+    // Every deterministic table records the quality it was asked for (closed
+    // forms ignore it).
+    if (settings.method == Method::quadrature) t.method["quality"] = to_string(settings.quality);
     t.options = settings.params;
     const std::size_t texels = t.texel_count();
     const std::size_t nc = t.channels.size();

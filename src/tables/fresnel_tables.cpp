@@ -17,7 +17,8 @@
 namespace brdflut {
 namespace {
 
-constexpr double kAbsTolerance = kFresnelAbsTolerance;
+// Absolute tolerance of the averages at each quality.
+constexpr tables::Tolerances kTolerances{1e-6, kFresnelAbsTolerance, 1e-13};
 // Largest eta and k accepted on an axis or as an option. Beyond it no real
 // material exists at visible wavelengths and F is within 1e-2 of 1 except
 // at normal incidence.
@@ -106,7 +107,8 @@ nlohmann::json closed_form_method() {
 
 nlohmann::json average_method(const TableSettings& s) {
     return s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
-                                           : tables::quadrature_method(kQuadratureRule, kAbsTolerance);
+                                           : tables::quadrature_method(kQuadratureRule,
+                                                                       kTolerances.at(s.quality));
 }
 
 // ---- fresnel_dielectric: F(mu, eta) ---------------------------------------
@@ -125,17 +127,18 @@ public:
 class DielectricAverageEvaluator final : public TexelEvaluator {
 public:
     explicit DielectricAverageEvaluator(const TableSettings& s)
-        : mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed) {}
+        : mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed),
+          abs_tol_(kTolerances.at(s.quality)) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const double eta = c[0];
         TexelValue out;
         const std::uint64_t seed = mix_seed(seed_, texel);
         const Estimate<1> outside = mc_ ? fresnel_dielectric_average_mc(eta, samples_, seed)
-                                        : fresnel_dielectric_average_quadrature(eta, kAbsTolerance);
+                                        : fresnel_dielectric_average_quadrature(eta, abs_tol_);
         const Estimate<1> inside =
             mc_ ? fresnel_dielectric_average_mc(1.0 / eta, samples_, mix_seed(seed, 1))
-                : fresnel_dielectric_average_quadrature(1.0 / eta, kAbsTolerance);
+                : fresnel_dielectric_average_quadrature(1.0 / eta, abs_tol_);
         const double scale = mc_ ? tables::kMcErrorSigmas : 1.0;
         out.value = {outside.value[0], inside.value[0], 0.0, 0.0};
         out.error = {scale * outside.error[0], scale * inside.error[0], 0.0, 0.0};
@@ -146,6 +149,7 @@ private:
     bool mc_;
     long long samples_;
     std::uint64_t seed_;
+    double abs_tol_;
 };
 
 // ---- fresnel_conductor: F(mu) per channel for one metal -------------------
@@ -203,13 +207,14 @@ PreparedTable prepare_conductor(const TableSettings& s) {
 class ConductorAverageEvaluator final : public TexelEvaluator {
 public:
     ConductorAverageEvaluator(FresnelForm form, const TableSettings& s)
-        : form_(form), mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed) {}
+        : form_(form), mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed),
+          abs_tol_(kTolerances.at(s.quality)) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const double eta = c[0], k = c[1];
         const Estimate<1> e =
             mc_ ? fresnel_conductor_average_mc(eta, k, form_, samples_, mix_seed(seed_, texel))
-                : fresnel_conductor_average_quadrature(eta, k, form_, kAbsTolerance);
+                : fresnel_conductor_average_quadrature(eta, k, form_, abs_tol_);
         TexelValue out;
         out.value[0] = e.value[0];
         out.error[0] = (mc_ ? tables::kMcErrorSigmas : 1.0) * e.error[0];
@@ -221,6 +226,7 @@ private:
     bool mc_;
     long long samples_;
     std::uint64_t seed_;
+    double abs_tol_;
 };
 
 }  // namespace

@@ -15,7 +15,8 @@
 namespace brdflut {
 namespace {
 
-constexpr double kAbsTolerance = kGgxTableTolerance;
+// Absolute tolerance of the quadrature at each quality.
+constexpr tables::Tolerances kTolerances{1e-5, kGgxTableTolerance, 1e-12};
 
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), "
@@ -104,7 +105,8 @@ SplitSumCache& split_sum_cache() {
 class GgxEvaluator final : public TexelEvaluator {
 public:
     GgxEvaluator(Kind kind, Visibility vis, const TableSettings& s)
-        : kind_(kind), vis_(vis), method_(s.method), samples_(s.samples), seed_(s.seed) {}
+        : kind_(kind), vis_(vis), method_(s.method), samples_(s.samples), seed_(s.seed),
+          abs_tol_(kTolerances.at(s.quality)) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         TexelValue out;
@@ -113,14 +115,14 @@ public:
         if (kind_ == Kind::albedo_avg) {
             const double alpha = c[0];
             const Estimate<1> e = mc ? ggx_albedo_average_mc(alpha, vis_, samples_, seed)
-                                     : ggx_albedo_average(alpha, vis_, kAbsTolerance);
+                                     : ggx_albedo_average(alpha, vis_, abs_tol_);
             out.value[0] = e.value[0];
             out.error[0] = mc ? tables::kMcErrorSigmas * e.error[0] : e.error[0];
             return out;
         }
         const double mu = c[0], alpha = c[1];
         const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
-                                 : split_sum_cache().get(mu, alpha, vis_, kAbsTolerance);
+                                 : split_sum_cache().get(mu, alpha, vis_, abs_tol_);
         const double scale = mc ? tables::kMcErrorSigmas : 1.0;
         if (kind_ == Kind::dfg) {
             out.value = {e.value[0], e.value[1], 0.0, 0.0};
@@ -139,6 +141,7 @@ private:
     Method method_;
     long long samples_;
     std::uint64_t seed_;
+    double abs_tol_;
 };
 
 TableDefinition make(Kind kind, std::string id, std::string description,
@@ -157,7 +160,7 @@ TableDefinition make(Kind kind, std::string id, std::string description,
         p.model = ggx_model(vis);
         p.method = s.method == Method::monte_carlo
                        ? tables::monte_carlo_method(kMcSampler, s)
-                       : tables::quadrature_method(kQuadratureRule, kAbsTolerance);
+                       : tables::quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
         return p;
     };
     return d;

@@ -8,13 +8,15 @@
 namespace brdflut::tables {
 namespace {
 
-constexpr double kAbsTolerance = kLobeAbsTolerance;
+// Absolute tolerance of the quadrature at each quality.
+constexpr Tolerances kTolerances{1e-5, kLobeAbsTolerance, 1e-12};
 
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (7,15), split at every kink of the integrand: the phi integral in "
     "closed form where it has one (diffuse, subsurface, Oren-Nayar family), in polar "
-    "coordinates about wo for the sheen, over the GTR1 half-vector measure with phi clipped "
-    "to the upper hemisphere for the clearcoat; polynomial parts by exact Gauss-Legendre; "
+    "coordinates about wo for the sheen, over the GTR1 half-vector measure (Gauss-Kronrod "
+    "(15,31)) with phi clipped to the upper hemisphere for the clearcoat (doubling trapezoid "
+    "on full circles, Gauss-Kronrod (15,31) in tan(phi/2) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
     "averages over theta_o; error per value: QUADPACK estimate";
 
 std::string mc_sampler(Lobe lobe) {
@@ -25,7 +27,8 @@ std::string mc_sampler(Lobe lobe) {
 class LobeEvaluator final : public TexelEvaluator {
 public:
     LobeEvaluator(Lobe lobe, LobeTableKind kind, const TableSettings& s)
-        : lobe_(lobe), kind_(kind), method_(s.method), samples_(s.samples), seed_(s.seed) {}
+        : lobe_(lobe), kind_(kind), method_(s.method), samples_(s.samples), seed_(s.seed),
+          abs_tol_(kTolerances.at(s.quality)) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const bool mc = method_ == Method::monte_carlo;
@@ -34,15 +37,15 @@ public:
         switch (kind_) {
             case LobeTableKind::albedo:
                 e = mc ? lobe_albedo_mc(lobe_, c[0], c[1], samples_, seed)
-                       : lobe_albedo(lobe_, c[0], c[1], kAbsTolerance);
+                       : lobe_albedo(lobe_, c[0], c[1], abs_tol_);
                 break;
             case LobeTableKind::albedo_1d:
                 e = mc ? lobe_albedo_mc(lobe_, c[0], 0.0, samples_, seed)
-                       : lobe_albedo(lobe_, c[0], 0.0, kAbsTolerance);
+                       : lobe_albedo(lobe_, c[0], 0.0, abs_tol_);
                 break;
             case LobeTableKind::albedo_average:
                 e = mc ? lobe_albedo_average_mc(lobe_, c[0], samples_, seed)
-                       : lobe_albedo_average(lobe_, c[0], kAbsTolerance);
+                       : lobe_albedo_average(lobe_, c[0], abs_tol_);
                 break;
         }
         TexelValue out;
@@ -57,6 +60,7 @@ private:
     Method method_;
     long long samples_;
     std::uint64_t seed_;
+    double abs_tol_;
 };
 
 }  // namespace
@@ -75,7 +79,7 @@ TableDefinition lobe_table(Lobe lobe, LobeTableKind kind, std::string id, std::s
         p.model = model;
         p.method = s.method == Method::monte_carlo
                        ? monte_carlo_method(mc_sampler(lobe), s)
-                       : quadrature_method(kQuadratureRule, kAbsTolerance);
+                       : quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
         return p;
     };
     return d;

@@ -23,6 +23,14 @@ AxisSpec alpha_axis(int count = 128);
 // The option value of `name`, which validate_settings has checked.
 const std::string& param(const TableSettings& s, const std::string& name);
 
+// The absolute tolerance of a table family at each quality.
+struct Tolerances {
+    double draft, standard, reference;
+    double at(Quality q) const {
+        return q == Quality::draft ? draft : q == Quality::reference ? reference : standard;
+    }
+};
+
 // Method metadata of the adaptive quadrature and of the Monte Carlo route.
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
 nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);
