@@ -46,12 +46,15 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("list", "List every table with its axes, channels and options");
 
-    CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR files");
+    CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR, C++ header, 16-bit PNG, DDS or KTX2 files");
     GenerateArgs g;
     gen->add_option("ids", g.ids, "Table ids (see 'brdflut list')");
     gen->add_flag("--all", g.all, "Generate every table of the catalogue");
     gen->add_option("-o,--output", g.output, "Output folder, created if missing")->capture_default_str();
     gen->add_option("--pixel", g.pixel, "Stored pixel type: half or float")->capture_default_str();
+    gen->add_option("--format", g.format,
+                    "File format: exr, cpp (C++17 header), png16 (values in [0, 1] only), dds or ktx2")
+        ->capture_default_str();
     gen->add_option("--threads", g.threads, "Worker threads; 0 uses every core")->capture_default_str();
     gen->add_flag("-q,--quiet", g.quiet, "Print nothing but errors");
     add_table_options(*gen, g.table, true);
