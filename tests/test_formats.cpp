@@ -619,3 +619,71 @@ TEST(Cli, Png16OfATableWithValuesAboveOneIsRefusedWithExitTwoAndNoFile) {
     EXPECT_NE(r.err.find("texel ("), std::string::npos) << r.err;
     EXPECT_TRUE(std::filesystem::is_empty(out)) << "no file, not even a temporary one";
 }
+
+// ---------------------------------------------------------------- reading back
+
+TEST(ReadTableImage, ReadsEveryBinaryFormatBackToTheStoredValuesAndMetadata) {
+    TempDir dir;
+    for (const Format f : {Format::exr, Format::png16, Format::dds, Format::ktx2})
+        for (const PixelType p : {PixelType::half, PixelType::float32})
+            for (const int channels : {1, 2, 3, 4}) {
+                if (f == Format::png16 && p == PixelType::half) continue;
+                SCOPED_TRACE(std::string(to_string(f)) + " " + std::string(to_string(p)) + " " +
+                             std::to_string(channels));
+                const Table t = make_table(channels, 5, 3);
+                const std::string path = dir / ("t." + file_extension(f));
+                write_table(path, t, p, f);
+                const ExrImage img = read_table_image(path);
+                EXPECT_EQ(img.width, 5);
+                EXPECT_EQ(img.height, 3);
+                const Storage s = storage_for(f, p);
+                const int stored = static_cast<int>(img.channel_names.size());
+                ASSERT_GE(stored, channels);
+                for (std::size_t k = 0; k < t.texel_count(); ++k)
+                    for (int c = 0; c < channels; ++c)
+                        ASSERT_NEAR(img.pixels[k * static_cast<std::size_t>(stored) + static_cast<std::size_t>(c)],
+                                    round_to_storage(t.at(k, c), s), s == Storage::unorm16 ? 1e-15 : 0.0)
+                            << "texel " << k << " channel " << c;
+                if (f == Format::dds) {
+                    EXPECT_FALSE(img.has_metadata);
+                } else {
+                    ASSERT_TRUE(img.has_metadata);
+                    EXPECT_EQ(img.metadata, metadata_json(t, s));
+                }
+            }
+}
+
+TEST(ReadTableImage, UnknownOrTruncatedFilesAreClearErrors) {
+    TempDir dir;
+    std::ofstream(dir / "x.txt") << "hello";
+    EXPECT_THROW(read_table_image(dir / "x.txt"), RuntimeError);
+    EXPECT_THROW(read_table_image(dir / "missing.ktx2"), RuntimeError);
+    write_table(dir / "t.ktx2", make_table(2), PixelType::half, Format::ktx2);
+    const std::string b = read_file(dir / "t.ktx2");
+    std::ofstream(dir / "cut.ktx2", std::ios::binary) << b.substr(0, b.size() - 10);
+    try {
+        read_table_image(dir / "cut.ktx2");
+        FAIL() << "expected an error";
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("cut.ktx2"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Cli, CompareAndInspectReadKtx2AndPng16Files) {
+    TempDir dir;
+    for (const char* f : {"ktx2", "png16"}) {
+        auto r = run_cli("generate ggx_dfg --size 8 --format " + std::string(f) + " -o '" + dir.path().string() + "'",
+                         dir);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    for (const char* name : {"ggx_dfg.ktx2", "ggx_dfg.png"}) {
+        auto r = run_cli("compare '" + (dir / name) + "' --json", dir);
+        ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_EQ(j.at("table"), "ggx_dfg") << r.out;
+        r = run_cli("inspect '" + (dir / name) + "' --json", dir);
+        ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.err;
+        EXPECT_EQ(nlohmann::json::parse(r.out).at("metadata").at("table"), "ggx_dfg");
+    }
+}

@@ -53,3 +53,18 @@ std::string cpp_identifier(std::string_view table_id);
 void write_table(const std::string& path, const Table& table, PixelType pixel, Format f);
 
 }  // namespace brdflut
+
+#include "brdflut/exr.h"
+
+namespace brdflut {
+
+// Reads a table file that brdflut writes in any binary format (exr, png16,
+// dds, ktx2), recognised by its first bytes, into the same structure as
+// read_exr(). Channels are named R, G, B, A as stored (a dds/ktx2 3-channel
+// table has its A = 1 padding, a png16 2-channel table its B = 0); png16
+// samples are read as q / 65535 with `pixel` float32 (the metadata's `pixel`
+// says unorm16); dds files carry no metadata. Only the layouts brdflut writes
+// are accepted. Throws brdflut::RuntimeError naming the file on any failure.
+ExrImage read_table_image(const std::string& path);
+
+}  // namespace brdflut

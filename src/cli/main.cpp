@@ -25,7 +25,7 @@ extern "C" void on_signal(int sig) {
 }
 
 void add_describe_options(CLI::App& app, DescribeArgs& d) {
-    app.add_option("file", d.file, "The LUT file (OpenEXR)")->required();
+    app.add_option("file", d.file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
     app.add_option("--as", d.as, "Table id of a foreign file (one without brdflut metadata)");
     app.add_option("--channels", d.channels,
                    "What each file channel holds, as sums of the table's channels, e.g. R=G,G=R+G");
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;
     bool inspect_json = false;
-    ins->add_option("file", inspect_file, "The LUT file (OpenEXR)")->required();
+    ins->add_option("file", inspect_file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
     ins->add_flag("--json", inspect_json, "Print as JSON");
 
     CLI::App* smp = app.add_subcommand("sample", "Value of a LUT at a parameter point, filtered as a GPU does");
