@@ -26,6 +26,7 @@
 #include <string>
 #include <string_view>
 
+#include "brdflut/exr.h"
 #include "brdflut/table.h"
 
 namespace brdflut {
@@ -51,12 +52,6 @@ std::string cpp_identifier(std::string_view table_id);
 // outside [0, 1] (Error), naming the table, texel, channel and value, before
 // any file is created.
 void write_table(const std::string& path, const Table& table, PixelType pixel, Format f);
-
-}  // namespace brdflut
-
-#include "brdflut/exr.h"
-
-namespace brdflut {
 
 // Reads a table file that brdflut writes in any binary format (exr, png16,
 // dds, ktx2), recognised by its first bytes, into the same structure as
