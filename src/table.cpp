@@ -41,10 +41,28 @@ PixelType pixel_type_from_string(std::string_view s) {
     throw Error("pixel type '" + std::string(s) + "' is not known; allowed: half, float");
 }
 
-double round_to_storage(double v, PixelType p) {
-    if (p == PixelType::half) return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(v))));
-    return static_cast<double>(static_cast<float>(v));
+Storage storage_of(PixelType p) { return p == PixelType::half ? Storage::half : Storage::float32; }
+
+std::string_view to_string(Storage s) {
+    switch (s) {
+        case Storage::half: return "half";
+        case Storage::float32: return "float";
+        case Storage::unorm16: return "unorm16";
+    }
+    return "float";
 }
+
+double round_to_storage(double v, Storage s) {
+    switch (s) {
+        case Storage::half:
+            return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(v))));
+        case Storage::float32: return static_cast<double>(static_cast<float>(v));
+        case Storage::unorm16: return std::round(v * 65535.0) / 65535.0;  // as png16_sample
+    }
+    return v;
+}
+
+double round_to_storage(double v, PixelType p) { return round_to_storage(v, storage_of(p)); }
 
 int Table::height() const {
     int h = axes.size() > 1 ? axes[1].count : 1;
@@ -58,18 +76,22 @@ std::size_t Table::texel_count() const {
     return n;
 }
 
-double error_bound(const Table& t, PixelType p) {
+double error_bound(const Table& t, PixelType p) { return error_bound(t, storage_of(p)); }
+
+double error_bound(const Table& t, Storage s) {
     double bound = 0.0;
     for (std::size_t i = 0; i < t.values.size(); ++i) {
         const double v = t.values[i];
-        const double rounding = std::abs(round_to_storage(v, p) - v);
+        const double rounding = std::abs(round_to_storage(v, s) - v);
         const double e = (i < t.errors.size() ? t.errors[i] : 0.0) + rounding;
         bound = std::max(bound, e);
     }
     return bound;
 }
 
-nlohmann::json metadata_json(const Table& t, PixelType p) {
+nlohmann::json metadata_json(const Table& t, PixelType p) { return metadata_json(t, storage_of(p)); }
+
+nlohmann::json metadata_json(const Table& t, Storage s) {
     nlohmann::json j;
     j["table"] = t.id;
     j["generator"] = {{"name", kName}, {"version", kVersion}};
@@ -92,8 +114,8 @@ nlohmann::json metadata_json(const Table& t, PixelType p) {
                                             : "x: axis 0 along the single row");
     j["channels"] = t.channels;
     j["method"] = t.method;
-    j["pixel"] = to_string(p);
-    j["error_bound"] = error_bound(t, p);
+    j["pixel"] = to_string(s);
+    j["error_bound"] = error_bound(t, s);
     return j;
 }
 

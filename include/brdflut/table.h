@@ -62,15 +62,25 @@ enum class PixelType { half, float32 };
 std::string_view to_string(PixelType p);
 PixelType pixel_type_from_string(std::string_view s);  // throws brdflut::Error
 
+// How a value is stored in a file: as a float pixel type, or (16-bit PNG) as
+// a 16-bit unsigned normalised integer round(v * 65535) read back as q / 65535.
+enum class Storage { half, float32, unorm16 };
+Storage storage_of(PixelType p);
+std::string_view to_string(Storage s);  // "half", "float", "unorm16"
+
 // Rounds a value to the storage type and back.
 double round_to_storage(double v, PixelType p);
+double round_to_storage(double v, Storage s);
 
 // Largest estimated absolute error of any stored value: integration error
 // plus the rounding of each value to the storage type.
 double error_bound(const Table& t, PixelType p);
+double error_bound(const Table& t, Storage s);
 
-// The `brdflut` metadata of a table stored with pixel type p.
+// The `brdflut` metadata of a table stored with pixel type p (or storage s):
+// its `pixel` names the storage and its `error_bound` includes the rounding.
 nlohmann::json metadata_json(const Table& t, PixelType p);
+nlohmann::json metadata_json(const Table& t, Storage s);
 
 // Rebuilds axes from metadata; throws brdflut::RuntimeError on malformed input.
 std::vector<Axis> axes_from_json(const nlohmann::json& axes);

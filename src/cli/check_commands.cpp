@@ -7,6 +7,7 @@
 
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
+#include "brdflut/formats.h"
 #include "brdflut/lut.h"
 #include "brdflut/plot.h"
 #include "brdflut/verify.h"
@@ -36,7 +37,7 @@ struct Described {
 
 Described describe(const DescribeArgs& a) {
     Described d;
-    d.image = read_exr(a.file);
+    d.image = read_table_image(a.file);
     if (a.as.empty()) {
         if (!a.table.size.empty() || !a.table.ranges.empty() || !a.table.counts.empty() ||
             !a.table.placements.empty() || !a.table.warps.empty() || !a.table.params.empty())
@@ -182,7 +183,7 @@ int run_compare(const CompareArgs& a) {
 }
 
 int run_inspect(const std::string& file, bool json) {
-    const ExrImage img = read_exr(file);
+    const ExrImage img = read_table_image(file);
     const std::vector<ChannelStats> stats = channel_stats(img);
     if (json) {
         nlohmann::json j;

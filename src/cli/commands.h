@@ -16,6 +16,7 @@ struct GenerateArgs {
     bool all = false;
     std::string output = ".";
     std::string pixel = "float";
+    std::string format = "exr";  // exr, cpp, png16, dds, ktx2 (brdflut/formats.h)
     int threads = 0;
     bool quiet = false;
     TableArgs table;

@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include "brdflut/error.h"
-#include "brdflut/exr.h"
+#include "brdflut/formats.h"
 #include "brdflut/generate.h"
 #include "cli/commands.h"
 
@@ -82,6 +82,10 @@ int run_generate(const GenerateArgs& a) {
         for (const auto& id : a.ids) defs.push_back(&find_table(id));
     }
     const PixelType pixel = pixel_type_from_string(a.pixel);
+    const Format format = format_from_string(a.format);
+    if (format == Format::png16 && pixel == PixelType::half)
+        throw Error("--pixel half does not apply to --format png16, which stores 16-bit integers round(v * 65535)");
+    const Storage storage = storage_for(format, pixel);
     if (a.threads < 0 || a.threads > 1024)
         throw Error("--threads " + std::to_string(a.threads) + " is out of range; allowed: 0 (all cores) to 1024");
     const Method method = method_from_string(a.table.method);
@@ -120,13 +124,14 @@ int run_generate(const GenerateArgs& a) {
         opt.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
         const Table table = generate(*defs[i], settings[i], opt);
         progress.finish();
-        const std::string path = (std::filesystem::path(a.output) / (table.id + ".exr")).string();
-        write_exr(path, table, pixel);
+        const std::string path =
+            (std::filesystem::path(a.output) / (table.id + "." + file_extension(format))).string();
+        write_table(path, table, pixel, format);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (!a.quiet) {
             std::printf("wrote %s: %dx%d, %d channel(s), %s, error bound %.2e, %.2f s\n", path.c_str(),
                         table.width(), table.height(), table.channel_count(),
-                        std::string(to_string(pixel)).c_str(), error_bound(table, pixel), seconds);
+                        std::string(to_string(storage)).c_str(), error_bound(table, storage), seconds);
             std::fflush(stdout);
         }
     }

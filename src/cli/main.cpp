@@ -25,7 +25,7 @@ extern "C" void on_signal(int sig) {
 }
 
 void add_describe_options(CLI::App& app, DescribeArgs& d) {
-    app.add_option("file", d.file, "The LUT file (OpenEXR)")->required();
+    app.add_option("file", d.file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
     app.add_option("--as", d.as, "Table id of a foreign file (one without brdflut metadata)");
     app.add_option("--channels", d.channels,
                    "What each file channel holds, as sums of the table's channels, e.g. R=G,G=R+G");
@@ -72,12 +72,15 @@ int main(int argc, char** argv) {
 
     app.add_subcommand("list", "List every table with its axes, channels and options");
 
-    CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR files");
+    CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR, C++ header, 16-bit PNG, DDS or KTX2 files");
     GenerateArgs g;
     gen->add_option("ids", g.ids, "Table ids (see 'brdflut list')");
     gen->add_flag("--all", g.all, "Generate every table of the catalogue");
     gen->add_option("-o,--output", g.output, "Output folder, created if missing")->capture_default_str();
     gen->add_option("--pixel", g.pixel, "Stored pixel type: half or float")->capture_default_str();
+    gen->add_option("--format", g.format,
+                    "File format: exr, cpp (C++17 header), png16 (values in [0, 1] only), dds or ktx2")
+        ->capture_default_str();
     gen->add_option("--threads", g.threads, "Worker threads; 0 uses every core")->capture_default_str();
     gen->add_flag("-q,--quiet", g.quiet, "Print nothing but errors");
     std::string config_file;
@@ -112,7 +115,7 @@ int main(int argc, char** argv) {
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;
     bool inspect_json = false;
-    ins->add_option("file", inspect_file, "The LUT file (OpenEXR)")->required();
+    ins->add_option("file", inspect_file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
     ins->add_flag("--json", inspect_json, "Print as JSON");
 
     CLI::App* smp = app.add_subcommand("sample", "Value of a LUT at a parameter point, filtered as a GPU does");

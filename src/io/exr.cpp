@@ -15,40 +15,21 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <unistd.h>
 
 #include "brdflut/error.h"
 #include "io/atomic_file.h"
+#include "io/table_checks.h"
 
 namespace brdflut {
 namespace {
 constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
-
-void check_finite(const Table& t) {
-    const std::size_t nc = t.channels.size();
-    for (std::size_t i = 0; i < t.values.size(); ++i) {
-        if (std::isfinite(t.values[i])) continue;
-        const std::size_t texel = i / nc;
-        std::ostringstream s;
-        s << "table '" << t.id << "': value " << t.values[i] << " at texel (";
-        std::size_t rest = texel;
-        for (std::size_t a = 0; a < t.axes.size(); ++a) {
-            const std::size_t n = static_cast<std::size_t>(t.axes[a].count);
-            s << (a ? ", " : "") << t.axes[a].name << " index " << rest % n << " = "
-              << t.axes[a].value(static_cast<int>(rest % n));
-            rest /= n;
-        }
-        s << "), channel " << kChannelNames[i % nc] << " is not finite; nothing was written";
-        throw RuntimeError(s.str());
-    }
-}
 }  // namespace
 
 void write_exr(const std::string& path, const Table& table, PixelType pixel) {
-    check_finite(table);
+    check_shape(table);
+    check_storable(table, storage_of(pixel));
     const int nc = table.channel_count();
-    if (nc < 1 || nc > 4) throw RuntimeError("table '" + table.id + "' must have 1 to 4 channels");
     const int width = table.width(), height = table.height();
     const std::string json = metadata_json(table, pixel).dump();
 

@@ -1,0 +1,139 @@
+// KTX 2.0 output: one uncompressed 2-D level of a 16- or 32-bit float format.
+//
+// Layout (KTX File Format Specification 2.0, section "File Structure"):
+//   identifier (12 bytes); header: vkFormat, typeSize, pixelWidth,
+//   pixelHeight, pixelDepth, layerCount, faceCount, levelCount,
+//   supercompressionScheme (UInt32 each); index: dfdByteOffset,
+//   dfdByteLength, kvdByteOffset, kvdByteLength (UInt32), sgdByteOffset,
+//   sgdByteLength (UInt64); level index: byteOffset, byteLength,
+//   uncompressedByteLength (UInt64) per level; the Data Format Descriptor;
+//   key/value data; mip padding; the level's texels. All little-endian.
+#include <cstdint>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "brdflut/error.h"
+#include "brdflut/version.h"
+#include "io/binary.h"
+#include "io/table_checks.h"
+#include "io/table_writers.h"
+
+namespace brdflut {
+namespace {
+
+// VkFormat values (Vulkan specification, "Formats") by stored channel count.
+std::uint32_t vk_format(PixelType pixel, int channels) {
+    const bool half = pixel == PixelType::half;
+    switch (channels) {
+        case 1: return half ? 76u : 100u;  // R16_SFLOAT : R32_SFLOAT
+        case 2: return half ? 83u : 103u;  // R16G16_SFLOAT : R32G32_SFLOAT
+        default: return half ? 97u : 109u; // R16G16B16A16_SFLOAT : R32G32B32A32_SFLOAT
+    }
+}
+
+// Khronos Data Format Specification 1.3, "Khronos Basic Data Format
+// Descriptor Block" (section 5) for an unpacked little-endian SFLOAT format:
+// one sample per channel. The KTX spec ("Data Format Descriptor",
+// "Restrictions") requires the samples to match vkFormat.
+void write_dfd(ByteWriter& out, int channels, int component_bytes) {
+    constexpr std::uint32_t KHR_DF_VENDORID_KHRONOS = 0, KHR_DF_KHR_DESCRIPTORTYPE_BASICFORMAT = 0;
+    constexpr std::uint32_t KHR_DF_VERSIONNUMBER_1_3 = 2;
+    constexpr std::uint32_t KHR_DF_MODEL_RGBSDA = 1;
+    // Table data has no colour primaries; three.js and others read
+    // UNSPECIFIED + LINEAR as "no colour space", which is what a LUT is.
+    constexpr std::uint32_t KHR_DF_PRIMARIES_UNSPECIFIED = 0, KHR_DF_TRANSFER_LINEAR = 1;
+    constexpr std::uint32_t KHR_DF_FLAG_ALPHA_STRAIGHT = 0;
+    constexpr std::uint32_t KHR_DF_SAMPLE_DATATYPE_FLOAT = 0x80, KHR_DF_SAMPLE_DATATYPE_SIGNED = 0x40;
+    constexpr std::uint32_t kChannelId[4] = {0, 1, 2, 15};  // RGBSDA red, green, blue, alpha
+    constexpr std::uint32_t kMinusOne = 0xBF800000u, kPlusOne = 0x3F800000u;  // -1.0f, 1.0f
+
+    const std::uint32_t block_size = 24 + 16 * static_cast<std::uint32_t>(channels);
+    out.u32(4 + block_size);  // dfdTotalSize
+    out.u32(KHR_DF_VENDORID_KHRONOS | KHR_DF_KHR_DESCRIPTORTYPE_BASICFORMAT << 17);
+    out.u32(KHR_DF_VERSIONNUMBER_1_3 | block_size << 16);
+    out.u32(KHR_DF_MODEL_RGBSDA | KHR_DF_PRIMARIES_UNSPECIFIED << 8 | KHR_DF_TRANSFER_LINEAR << 16 |
+            KHR_DF_FLAG_ALPHA_STRAIGHT << 24);
+    out.u32(0);  // texelBlockDimension0..3 = 0 (1x1x1x1)
+    out.u32(static_cast<std::uint32_t>(channels * component_bytes));  // bytesPlane0; planes 1..3 = 0
+    out.u32(0);                                                         // bytesPlane4..7 = 0
+    for (int c = 0; c < channels; ++c) {
+        const std::uint32_t bits = 8 * static_cast<std::uint32_t>(component_bytes);
+        const std::uint32_t channel_type =
+            kChannelId[c] | KHR_DF_SAMPLE_DATATYPE_FLOAT | KHR_DF_SAMPLE_DATATYPE_SIGNED;
+        out.u32(bits * static_cast<std::uint32_t>(c) | (bits - 1) << 16 | channel_type << 24);
+        out.u32(0);  // samplePosition0..3
+        // Float samples: sampleLower/Upper are the float values for -1 and 1
+        // of a signed format (as Khronos' own dfdutils writes them).
+        out.u32(kMinusOne);
+        out.u32(kPlusOne);
+    }
+}
+
+// KTX spec, "Key/Value Data": keys sorted by code point, each entry
+// keyAndValueByteLength, key, NUL, value, padding to 4 bytes.
+void write_key_values(ByteWriter& out, const std::map<std::string, std::string>& kv) {
+    for (const auto& [key, value] : kv) {  // std::map: byte order = code point order for UTF-8
+        out.u32(static_cast<std::uint32_t>(key.size() + 1 + value.size() + 1));
+        out.raw(key);
+        out.u8(0);
+        out.raw(value);
+        out.u8(0);  // string values are NUL-terminated (spec: "should be")
+        out.align(4);
+    }
+}
+
+}  // namespace
+
+void write_ktx2(const std::string& path, const Table& table, PixelType pixel) {
+    check_shape(table);
+    check_storable(table, storage_of(pixel));
+    const int channels = gpu_stored_channels(table.channel_count());
+    const int component_bytes = pixel == PixelType::half ? 2 : 4;
+    const std::uint64_t texel_bytes = static_cast<std::uint64_t>(channels * component_bytes);
+    const std::vector<std::uint8_t> texels = pack_texels(table, pixel, channels);
+
+    ByteWriter out;
+    const char identifier[12] = {'\xAB', 'K', 'T', 'X', ' ', '2', '0', '\xBB', '\r', '\n', '\x1A', '\n'};
+    out.raw(std::string_view(identifier, sizeof identifier));
+    out.u32(vk_format(pixel, channels));
+    out.u32(static_cast<std::uint32_t>(component_bytes));  // typeSize: bytes of one component
+    out.u32(static_cast<std::uint32_t>(table.width()));    // pixelWidth
+    // pixelHeight: a 2-D texture also for one-axis tables (height 1), as the
+    // dds and exr files are; pixelHeight 0 would make it a 1-D texture.
+    out.u32(static_cast<std::uint32_t>(table.height()));
+    out.u32(0);  // pixelDepth: not a 3-D texture (z slices are stacked rows)
+    out.u32(0);  // layerCount: not an array
+    out.u32(1);  // faceCount
+    out.u32(1);  // levelCount: the base level only, no mipmaps to generate
+    out.u32(0);  // supercompressionScheme: none
+
+    const std::size_t index_at = out.size();
+    out.zeros(4 * 4 + 2 * 8);  // index, patched below
+    const std::size_t level_index_at = out.size();
+    out.zeros(3 * 8);  // level index, patched below
+
+    const std::size_t dfd_at = out.size();
+    write_dfd(out, channels, component_bytes);
+    const std::size_t kvd_at = out.size();
+    write_key_values(out, {{"KTXorientation", "rd"},  // row 0 at the top, x to the right
+                           {"KTXwriter", std::string(kName) + " " + kVersion},
+                           {"brdflut", metadata_json(table, pixel).dump()}});
+    const std::size_t kvd_end = out.size();
+    // "mipPadding": the level starts at a multiple of lcm(texel block size, 4).
+    out.align(std::lcm(static_cast<std::size_t>(texel_bytes), std::size_t{4}));
+    const std::size_t level_at = out.size();
+    out.raw(texels);
+
+    out.patch_u32(index_at, static_cast<std::uint32_t>(dfd_at));                 // dfdByteOffset
+    out.patch_u32(index_at + 4, static_cast<std::uint32_t>(kvd_at - dfd_at));    // dfdByteLength
+    out.patch_u32(index_at + 8, static_cast<std::uint32_t>(kvd_at));             // kvdByteOffset
+    out.patch_u32(index_at + 12, static_cast<std::uint32_t>(kvd_end - kvd_at));  // kvdByteLength
+    // sgdByteOffset, sgdByteLength stay 0: no supercompression global data.
+    out.patch_u64(level_index_at, level_at);             // byteOffset
+    out.patch_u64(level_index_at + 8, texels.size());    // byteLength
+    out.patch_u64(level_index_at + 16, texels.size());   // uncompressedByteLength
+    write_file_atomically(path, out.bytes());
+}
+
+}  // namespace brdflut

@@ -1,0 +1,67 @@
+#include "io/table_checks.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <string_view>
+
+#include "brdflut/error.h"
+
+namespace brdflut {
+namespace {
+constexpr const char* kChannelNames[4] = {"R", "G", "B", "A"};
+
+// Shortest text that reads back as the same double.
+std::string shortest(double v) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    return std::string(buf, static_cast<std::size_t>(end - buf));
+}
+}  // namespace
+
+std::string describe_value(const Table& t, std::size_t value_index) {
+    const std::size_t nc = t.channels.empty() ? 1 : t.channels.size();
+    std::ostringstream s;
+    s << "texel (";
+    std::size_t rest = value_index / nc;
+    for (std::size_t a = 0; a < t.axes.size(); ++a) {
+        const std::size_t n = static_cast<std::size_t>(t.axes[a].count);
+        s << (a ? ", " : "") << t.axes[a].name << " index " << rest % n << " = "
+          << t.axes[a].value(static_cast<int>(rest % n));
+        rest /= n;
+    }
+    s << "), channel " << kChannelNames[value_index % nc % 4];
+    return s.str();
+}
+
+void check_shape(const Table& t) {
+    const int nc = t.channel_count();
+    if (nc < 1 || nc > 4)
+        throw Error("table '" + t.id + "' has " + std::to_string(nc) + " channels; allowed: 1 to 4");
+    if (t.values.size() != t.texel_count() * static_cast<std::size_t>(nc))
+        throw Error("table '" + t.id + "' has " + std::to_string(t.values.size()) + " values; its axes and " +
+                    std::to_string(nc) + " channel(s) need " +
+                    std::to_string(t.texel_count() * static_cast<std::size_t>(nc)));
+}
+
+void check_storable(const Table& t, Storage s) {
+    for (std::size_t i = 0; i < t.values.size(); ++i) {
+        const double v = t.values[i];
+        if (!std::isfinite(v))
+            throw RuntimeError("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
+                               " is not finite; nothing was written");
+        if (s == Storage::unorm16) {
+            if (v >= 0.0 && v <= 1.0) continue;
+            throw Error("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
+                        " is outside [0, 1]; a 16-bit PNG (png16) holds values in [0, 1] only, use exr, dds, "
+                        "ktx2 or cpp for this table; nothing was written");
+        }
+        if (!std::isfinite(round_to_storage(v, s)))
+            throw RuntimeError("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
+                               " does not fit in " + std::string(to_string(s)) +
+                               (s == Storage::half ? " (largest 65504); use float pixels" : "") +
+                               "; nothing was written");
+    }
+}
+
+}  // namespace brdflut
