@@ -53,11 +53,11 @@ function(brdflut_add_luts target)
     message(FATAL_ERROR "brdflut_add_luts: the brdflut tool (target brdflut::brdflut_cli) "
                         "is not known; call find_package(brdflut CONFIG REQUIRED) first")
   endif()
+  if(arg_KEYWORDS_MISSING_VALUES)
+    message(FATAL_ERROR "brdflut_add_luts: ${arg_KEYWORDS_MISSING_VALUES} given without a value")
+  endif()
   if(NOT arg_TABLES AND NOT DEFINED arg_PRESET)
     message(FATAL_ERROR "brdflut_add_luts: give TABLES <id>... or PRESET <name>")
-  endif()
-  if(DEFINED arg_PRESET AND arg_PRESET STREQUAL "")
-    message(FATAL_ERROR "brdflut_add_luts: PRESET needs a name")
   endif()
 
   # Output file of each table, by format.
