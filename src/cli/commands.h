@@ -9,13 +9,15 @@
 
 namespace brdflut::cli {
 
-int run_list();
+int run_list(bool presets_only);
 
 struct GenerateArgs {
     std::vector<std::string> ids;
     bool all = false;
     std::string output = ".";
     std::string pixel = "float";
+    bool pixel_given = false;  // --pixel on the command line (else a preset's own)
+    std::string preset;        // --preset NAME
     int threads = 0;
     bool quiet = false;
     TableArgs table;

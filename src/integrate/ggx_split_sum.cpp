@@ -43,8 +43,8 @@ struct SplitSumIntegrand {
         const double o_h = sin_o * sin_h * cos_phi + mu_o * cos_h;
         const double mu_i = 2.0 * o_h * cos_h - mu_o;
         if (mu_i <= 0.0 || o_h <= 0.0) return {0.0, 0.0};
-        const double g2 = vis == Visibility::separable
-                              ? ggx.G1(mu_o) * ggx.G1(mu_i)
+        const double g2 = vis != Visibility::height_correlated
+                              ? ggx.G2(mu_o, mu_i, vis)
                               : 1.0 / (1.0 + lambda_o + ggx.lambda(mu_i));
         // (wo.h) / (mu_o cos(theta_h)) = (sin_o t cos(phi) + mu_o) / mu_o
         const double v = g2 * (sin_o * t * cos_phi + mu_o) / mu_o;
