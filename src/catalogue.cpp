@@ -17,6 +17,8 @@ const std::vector<TableDefinition>& catalogue() {
         register_dipole_tables(v);
         register_disney_tables(v);
         register_oren_nayar_tables(v);
+        register_sheen_tables(v);
+        register_preset_tables(v);
         return v;
     }();
     return all;
@@ -28,6 +30,22 @@ const TableDefinition& find_table(const std::string& id) {
     std::string known;
     for (const TableDefinition& d : catalogue()) known += (known.empty() ? "" : ", ") + d.id;
     throw Error("table '" + id + "' is not known; allowed: " + known);
+}
+
+const Preset& find_preset(const std::string& name) {
+    for (const Preset& p : presets())
+        if (p.name == name) return p;
+    std::string known;
+    for (const Preset& p : presets()) known += (known.empty() ? "" : ", ") + p.name;
+    throw Error("preset '" + name + "' is not known; allowed: " + known);
+}
+
+std::vector<const TableDefinition*> preset_tables(const std::string& name) {
+    find_preset(name);
+    std::vector<const TableDefinition*> out;
+    for (const TableDefinition& d : catalogue())
+        if (d.preset == name) out.push_back(&d);
+    return out;
 }
 
 TableSettings default_settings(const TableDefinition& def) {

@@ -108,10 +108,21 @@ TEST(GgxSplitSum, NormalIncidenceLossIsAlphaSquaredForSmallAlpha) {
         }
 }
 
-TEST(GgxSplitSum, GrazingLimitIsZero) {
-    const Estimate<2> e = ggx_split_sum(0.0, 0.5, Visibility::height_correlated);
-    EXPECT_EQ(e.value[0], 0.0);
-    EXPECT_EQ(e.value[1], 0.0);
+TEST(GgxSplitSum, GrazingIncidenceGivesTheLimitNotZero) {
+    // alpha = 1: E(mu) = 1 - mu ln(1 + 1/mu) -> 1 as mu -> 0.
+    const Estimate<2> one = ggx_split_sum(0.0, 1.0, Visibility::height_correlated);
+    EXPECT_NEAR(one.value[0] + one.value[1], 1.0, 1e-10);
+    // Every alpha and visibility: continuous at mu = 0.
+    for (Visibility vis : kBoth)
+        for (double alpha : {1e-3, 0.1, 0.5}) {
+            const Estimate<2> z = ggx_split_sum(0.0, alpha, vis);
+            const Estimate<2> near = ggx_split_sum(1e-12, alpha, vis);
+            for (int c = 0; c < 2; ++c) {
+                EXPECT_TRUE(std::isfinite(z.value[c]));
+                EXPECT_NEAR(z.value[c], near.value[c], 1e-7) << "alpha " << alpha;
+            }
+            EXPECT_GT(z.value[0] + z.value[1], 0.1) << "alpha " << alpha;
+        }
 }
 
 TEST(GgxSplitSum, SeparableLosesMoreEnergyThanHeightCorrelated) {

@@ -59,6 +59,9 @@ struct TableDefinition {
     std::vector<std::string> channels;  // meaning of R, G, B, A in order
     std::vector<ModelOption> options;
     bool supports_monte_carlo = false;
+    // The engine preset the table belongs to (`generate --preset NAME`); empty
+    // for the default set that `generate --all` writes.
+    std::string preset;
     // Validates settings (throws brdflut::Error) and builds the evaluator.
     std::function<PreparedTable(const TableSettings&)> prepare;
 };
@@ -66,6 +69,18 @@ struct TableDefinition {
 const std::vector<TableDefinition>& catalogue();
 // Throws brdflut::Error listing the known ids when id is unknown.
 const TableDefinition& find_table(const std::string& id);
+
+// An engine preset: the tables an engine uses, each in the engine's own layout.
+struct Preset {
+    std::string name;         // e.g. "filament"
+    std::string description;  // one line
+    PixelType pixel;          // the pixel type written unless --pixel is given
+};
+const std::vector<Preset>& presets();
+// Throws brdflut::Error listing the known presets when name is unknown.
+const Preset& find_preset(const std::string& name);
+// The catalogue's tables of one preset, in catalogue order.
+std::vector<const TableDefinition*> preset_tables(const std::string& name);
 
 // The defaults of a table: its axes and the default of every option.
 TableSettings default_settings(const TableDefinition& def);

@@ -24,6 +24,8 @@ constexpr double alpha_from_perceptual(double roughness) { return roughness * ro
 enum class Visibility {
     height_correlated,  // G2 = 1 / (1 + Lambda(o) + Lambda(i))       (Heitz 2014)
     separable,          // G2 = G1(o) G1(i)
+    schlick_smith,      // G2 = G1_s(o) G1_s(i), G1_s(mu) = mu / (mu (1 - k) + k), k = alpha / 2
+                        // (Karis 2013, "Real Shading in Unreal Engine 4", for image lighting)
 };
 std::string_view to_string(Visibility v);
 Visibility visibility_from_string(std::string_view s);  // throws brdflut::Error
@@ -58,9 +60,18 @@ struct Ggx {
         return 1.0 / (1.0 + lambda(mu));
     }
 
+    // Schlick's approximation of G1 with k = alpha / 2 (Karis 2013): not a
+    // Smith term of any distribution, but UE4's split-sum table uses it.
+    double G1_schlick(double mu) const {
+        if (mu <= 0.0) return 0.0;
+        const double k = 0.5 * alpha;
+        return mu / (mu * (1.0 - k) + k);
+    }
+
     double G2(double mu_o, double mu_i, Visibility vis) const {
         if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
         if (vis == Visibility::separable) return G1(mu_o) * G1(mu_i);
+        if (vis == Visibility::schlick_smith) return G1_schlick(mu_o) * G1_schlick(mu_i);
         return 1.0 / (1.0 + lambda(mu_o) + lambda(mu_i));
     }
 

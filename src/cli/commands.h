@@ -9,7 +9,7 @@
 
 namespace brdflut::cli {
 
-int run_list();
+int run_list(bool presets_only);
 
 struct GenerateArgs {
     std::vector<std::string> ids;
@@ -17,6 +17,8 @@ struct GenerateArgs {
     std::string output = ".";
     std::string pixel = "float";
     std::string format = "exr";  // exr, cpp, png16, dds, ktx2 (brdflut/formats.h)
+    bool pixel_given = false;  // --pixel on the command line (else a preset's own)
+    std::string preset;        // --preset NAME
     int threads = 0;
     bool quiet = false;
     TableArgs table;

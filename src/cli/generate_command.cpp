@@ -48,11 +48,20 @@ private:
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-int run_list() {
+int run_list(bool presets_only) {
     static const char* kAxisLetters[3] = {"x", "y", "z"};
     static const char* kChannels[4] = {"R", "G", "B", "A"};
+    if (presets_only) {
+        for (const Preset& p : presets()) {
+            std::cout << p.name << "\n  " << p.description << "\n  tables:";
+            for (const TableDefinition* d : preset_tables(p.name)) std::cout << " " << d->id;
+            std::cout << " (" << to_string(p.pixel) << ")\n\n";
+        }
+        return 0;
+    }
     for (const TableDefinition& d : catalogue()) {
-        std::cout << d.id << "\n  " << d.description << "\n";
+        std::cout << d.id << (d.preset.empty() ? "" : " [preset: " + d.preset + "]") << "\n  " << d.description
+                  << "\n";
         for (std::size_t i = 0; i < d.axes.size(); ++i)
             std::cout << "  " << kAxisLetters[i] << ": " << describe_axis(d.axes[i].axis) << "\n";
         for (std::size_t c = 0; c < d.channels.size(); ++c)
@@ -74,17 +83,25 @@ int run_list() {
 
 int run_generate(const GenerateArgs& a) {
     std::vector<const TableDefinition*> defs;
-    if (a.all) {
+    PixelType pixel = pixel_type_from_string(a.pixel);
+    if (!a.preset.empty()) {
+        if (a.all || !a.ids.empty()) throw Error("give table ids, --all or --preset, only one of them");
+        defs = preset_tables(a.preset);
+        if (!a.pixel_given) pixel = find_preset(a.preset).pixel;
+    } else if (a.all) {
         if (!a.ids.empty()) throw Error("give table ids or --all, not both");
-        for (const auto& d : catalogue()) defs.push_back(&d);
+        for (const auto& d : catalogue())
+            if (d.preset.empty()) defs.push_back(&d);
     } else {
-        if (a.ids.empty()) throw Error("no table given; name one or more ids (see 'brdflut list') or use --all");
+        if (a.ids.empty()) throw Error("no table given; name one or more ids (see 'brdflut list'), --all or --preset NAME");
         for (const auto& id : a.ids) defs.push_back(&find_table(id));
     }
-    const PixelType pixel = pixel_type_from_string(a.pixel);
     const Format format = format_from_string(a.format);
-    if (format == Format::png16 && pixel == PixelType::half)
-        throw Error("--pixel half does not apply to --format png16, which stores 16-bit integers round(v * 65535)");
+    if (format == Format::png16 && pixel == PixelType::half) {
+        if (a.pixel_given)
+            throw Error("--pixel half does not apply to --format png16, which stores 16-bit integers round(v * 65535)");
+        pixel = PixelType::float32;  // a preset's half pixels: png16 has its own 16-bit storage
+    }
     const Storage storage = storage_for(format, pixel);
     if (a.threads < 0 || a.threads > 1024)
         throw Error("--threads " + std::to_string(a.threads) + " is out of range; allowed: 0 (all cores) to 1024");

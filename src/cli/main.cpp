@@ -70,12 +70,15 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.footer("Run 'brdflut <command> --help' for the options of a command.");
 
-    app.add_subcommand("list", "List every table with its axes, channels and options");
+    CLI::App* lst = app.add_subcommand("list", "List every table with its axes, channels and options");
+    bool list_presets = false;
+    lst->add_flag("--presets", list_presets, "List the engine presets only");
 
     CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR, C++ header, 16-bit PNG, DDS or KTX2 files");
     GenerateArgs g;
     gen->add_option("ids", g.ids, "Table ids (see 'brdflut list')");
-    gen->add_flag("--all", g.all, "Generate every table of the catalogue");
+    gen->add_flag("--all", g.all, "Generate every table of the default set (not the presets)");
+    gen->add_option("--preset", g.preset, "Generate every table of an engine preset (see 'brdflut list --presets')");
     gen->add_option("-o,--output", g.output, "Output folder, created if missing")->capture_default_str();
     gen->add_option("--pixel", g.pixel, "Stored pixel type: half or float")->capture_default_str();
     gen->add_option("--format", g.format,
@@ -148,6 +151,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand(gen)) {
             if (!config_file.empty()) apply_config(*gen, config_file);
             collect_params(*gen, g.table);
+            g.pixel_given = gen->count("--pixel") > 0;
             return run_generate(g);
         }
         if (app.got_subcommand(ver)) return run_verify(v);
@@ -161,7 +165,7 @@ int main(int argc, char** argv) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);
         }
-        return run_list();
+        return run_list(list_presets);
     } catch (const Error& e) {
         std::cerr << "brdflut: error: " << e.what() << "\n";
         return kExitUsage;

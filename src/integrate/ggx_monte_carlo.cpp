@@ -82,7 +82,8 @@ Estimate<N> combine(const MeanAccumulator<N>& a, const MeanAccumulator<N>& b) {
 
 Estimate<2> ggx_split_sum_mc(double mu_o, double alpha, Visibility vis, long long samples, std::uint64_t seed) {
     Estimate<2> out;
-    if (!(mu_o > 0.0)) return out;
+    if (!(mu_o >= 0.0)) return out;
+    mu_o = std::max(mu_o, kGrazingMu);  // the grazing limit
     if (!(alpha > 0.0)) {  // mirror: a delta lobe, nothing to sample
         const double fc = schlick_weight(std::min(mu_o, 1.0));
         out.value = {1.0 - fc, fc};

@@ -65,11 +65,16 @@ struct SplitSumIntegrand {
     // 1 / (1 + Lambda_o + Lambda_i) with s = 1 + Lambda_o, k = 1; separable
     // G1(o) G1(i) with s = 1, k = G1(o). One square root and one division.
     double s, k;
+    // Other visibility terms (Schlick-Smith) go through Ggx::G2.
+    Ggx ggx_;
+    Visibility vis_;
+    bool generic_;
 
     SplitSumIntegrand(const Ggx& ggx, Visibility vis, double mu_o_, double sin_o_)
         : alpha2(ggx.alpha * ggx.alpha), mu_o(mu_o_), sin_o(sin_o_),
           s(vis == Visibility::separable ? 1.0 : 1.0 + ggx.lambda(mu_o_)),
-          k(vis == Visibility::separable ? ggx.G1(mu_o_) : 1.0) {}
+          k(vis == Visibility::separable ? ggx.G1(mu_o_) : 1.0), ggx_(ggx), vis_(vis),
+          generic_(vis != Visibility::height_correlated && vis != Visibility::separable) {}
 
     // What depends on t = tan(theta_h) only, hoisted out of the phi loop.
     struct Ring {
@@ -89,9 +94,14 @@ struct SplitSumIntegrand {
         const double o_h = q.a1 * cos_phi + q.a0;
         const double mu_i = q.two_cos_h * o_h - mu_o;
         if (mu_i <= 0.0 || o_h <= 0.0) return {0.0, 0.0};
-        const double r = std::sqrt(mu_i * mu_i + alpha2 * (1.0 - mu_i * mu_i));
-        const double p = 2.0 * mu_i * (r + mu_i);
-        const double v = k * p * o_h * q.scale / (s * p + alpha2 * (1.0 - mu_i * mu_i));
+        double v;
+        if (generic_) {  // Schlick-Smith: no fast form, use the model's G2
+            v = ggx_.G2(mu_o, mu_i, vis_) * o_h * q.scale;
+        } else {
+            const double r = std::sqrt(mu_i * mu_i + alpha2 * (1.0 - mu_i * mu_i));
+            const double p = 2.0 * mu_i * (r + mu_i);
+            v = k * p * o_h * q.scale / (s * p + alpha2 * (1.0 - mu_i * mu_i));
+        }
         const double fc = schlick_weight(o_h);
         return {v - v * fc, v * fc};
     }
@@ -113,7 +123,8 @@ const std::vector<double>& cos_table() {
 
 Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_tol) {
     Estimate<2> out;
-    if (!(mu_o > 0.0)) return out;  // grazing limit: no light reflected
+    if (!(mu_o >= 0.0)) return out;
+    mu_o = std::max(mu_o, kGrazingMu);  // the grazing limit
     if (mu_o > 1.0) mu_o = 1.0;
     if (!(alpha > 0.0)) {            // mirror limit
         const double fc = schlick_weight(mu_o);

@@ -7,14 +7,20 @@
 namespace brdflut {
 
 std::string_view to_string(Visibility v) {
-    return v == Visibility::separable ? "separable" : "height_correlated";
+    switch (v) {
+        case Visibility::separable: return "separable";
+        case Visibility::schlick_smith: return "schlick_smith";
+        case Visibility::height_correlated: break;
+    }
+    return "height_correlated";
 }
 
 Visibility visibility_from_string(std::string_view s) {
     if (s == "height_correlated") return Visibility::height_correlated;
     if (s == "separable") return Visibility::separable;
+    if (s == "schlick_smith") return Visibility::schlick_smith;
     throw Error("visibility '" + std::string(s) +
-                "' is not known; allowed: height_correlated, separable");
+                "' is not known; allowed: height_correlated, separable, schlick_smith");
 }
 
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1.

@@ -28,10 +28,10 @@ const char* kMcSampler = "GGX visible normals (Heitz 2018)";
 
 ModelOption visibility_option() {
     return {"visibility",
-            "shadowing-masking term: height_correlated Smith G2 (Heitz 2014) or separable "
-            "G1(o) G1(i)",
+            "shadowing-masking term: height_correlated Smith G2 (Heitz 2014), separable "
+            "G1(o) G1(i) or schlick_smith (k = alpha/2, Karis 2013)",
             "height_correlated",
-            {"height_correlated", "separable"}};
+            {"height_correlated", "separable", "schlick_smith"}};
 }
 
 nlohmann::json ggx_model(Visibility vis) {

@@ -12,6 +12,8 @@ void register_fresnel_tables(std::vector<TableDefinition>& out);
 void register_dipole_tables(std::vector<TableDefinition>& out);
 void register_disney_tables(std::vector<TableDefinition>& out);
 void register_oren_nayar_tables(std::vector<TableDefinition>& out);
+void register_sheen_tables(std::vector<TableDefinition>& out);
+void register_preset_tables(std::vector<TableDefinition>& out);
 
 // Helpers shared by the table families.
 namespace tables {
@@ -34,6 +36,9 @@ struct Tolerances {
 // Method metadata of the adaptive quadrature and of the Monte Carlo route.
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
 nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);
+
+// Model metadata of the Charlie sheen lobe (sheen_tables.cpp).
+nlohmann::json charlie_sheen_model();
 
 // Number of standard errors a Monte Carlo texel's error estimate spans.
 inline constexpr double kMcErrorSigmas = 4.0;

@@ -1,0 +1,266 @@
+// Engine presets: the tables an engine uses, each exactly in the engine's
+// layout (grid, texel placement, axis warps, roughness parameterization,
+// channel order and meaning, visibility term). Every value is one of the
+// core integrals (ggx_integrals.h, lobe_integrals.h, sheen_integrals.h) at
+// the texel's coordinates converted to the model's (alpha = r^2 through
+// alpha_from_perceptual), so compare, verify and inspect work unchanged.
+//
+// Karis 2013, "Real Shading in Unreal Engine 4" (split sum, Schlick-Smith G)
+// Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks"
+#include <memory>
+
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/lobe_integrals.h"
+#include "brdflut/random.h"
+#include "brdflut/sheen_integrals.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+namespace {
+
+
+enum class Kind {
+    filament_dfg,      // (mu, r): R = B, G = A + B, B = Charlie cloth E
+    unreal_dfg,        // (mu, r): R = A, G = B, Schlick-Smith k = alpha/2
+    hdrp_fgd,          // (mu, r): R = B, G = A + B, B = Disney diffuse E - 0.5
+    cycles_ggx_e,      // (alpha, mu): R = E
+    cycles_ggx_e_avg,  // (alpha): R = E_avg
+    split_sum,         // (mu, r): R = A, G = B, height-correlated (glTF, Godot)
+    gltf_charlie,      // (mu, r): R = G = 0, B = Charlie cloth E
+};
+
+class PresetEvaluator final : public TexelEvaluator {
+public:
+    PresetEvaluator(Kind kind, const TableSettings& s)
+        : kind_(kind), mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed) {}
+
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        const std::uint64_t seed = mix_seed(seed_, texel);
+        TexelValue out;
+        switch (kind_) {
+            case Kind::filament_dfg: {
+                const double alpha = alpha_from_perceptual(c[1]);
+                const Estimate<2> s = split(c[0], alpha, Visibility::height_correlated, seed);
+                const Estimate<1> cloth = sheen(c[0], alpha, seed);
+                out.value = {s.value[1], s.value[0] + s.value[1], cloth.value[0], 0.0};
+                out.error = {s.error[1], s.error[0] + s.error[1], cloth.error[0], 0.0};
+                break;
+            }
+            case Kind::unreal_dfg:
+            case Kind::split_sum: {
+                const Visibility vis =
+                    kind_ == Kind::unreal_dfg ? Visibility::schlick_smith : Visibility::height_correlated;
+                const Estimate<2> s = split(c[0], alpha_from_perceptual(c[1]), vis, seed);
+                out.value = {s.value[0], s.value[1], 0.0, 0.0};
+                out.error = {s.error[0], s.error[1], 0.0, 0.0};
+                break;
+            }
+            case Kind::hdrp_fgd: {
+                const Estimate<2> s = split(c[0], alpha_from_perceptual(c[1]), Visibility::height_correlated, seed);
+                const Estimate<1> d = mc_ ? lobe_albedo_mc(Lobe::disney_diffuse, c[0], c[1], samples_, seed)
+                                          : lobe_albedo(Lobe::disney_diffuse, c[0], c[1]);
+                out.value = {s.value[1], s.value[0] + s.value[1], d.value[0] - 0.5, 0.0};
+                out.error = {s.error[1], s.error[0] + s.error[1], scale() * d.error[0], 0.0};
+                break;
+            }
+            case Kind::cycles_ggx_e: {
+                const Estimate<2> s = split(c[1], c[0], Visibility::height_correlated, seed);
+                out.value[0] = s.value[0] + s.value[1];
+                out.error[0] = s.error[0] + s.error[1];
+                break;
+            }
+            case Kind::cycles_ggx_e_avg: {
+                const Estimate<1> e = mc_ ? ggx_albedo_average_mc(c[0], Visibility::height_correlated, samples_, seed)
+                                          : ggx_albedo_average(c[0], Visibility::height_correlated);
+                out.value[0] = e.value[0];
+                out.error[0] = scale() * e.error[0];
+                break;
+            }
+            case Kind::gltf_charlie: {
+                const Estimate<1> cloth = sheen(c[0], alpha_from_perceptual(c[1]), seed);
+                out.value[2] = cloth.value[0];
+                out.error[2] = cloth.error[0];
+                break;
+            }
+        }
+        return out;
+    }
+
+private:
+    double scale() const { return mc_ ? tables::kMcErrorSigmas : 1.0; }
+
+    // {A, B} with errors as stored (Monte Carlo: 4 standard errors; the error
+    // of a sum is bounded by the sum of the errors).
+    Estimate<2> split(double mu, double alpha, Visibility vis, std::uint64_t seed) const {
+        // mu = 0 (end-point grids) gives the grazing limit: see kGrazingMu.
+        Estimate<2> e = mc_ ? ggx_split_sum_mc(mu, alpha, vis, samples_, seed)
+                            : ggx_split_sum(mu, alpha, vis, kGgxAbsTolerance);
+        for (double& x : e.error) x *= scale();
+        return e;
+    }
+
+    Estimate<1> sheen(double mu, double alpha, std::uint64_t seed) const {
+        Estimate<1> e = mc_ ? sheen_charlie_albedo_mc(mu, alpha, samples_, seed) : sheen_charlie_albedo(mu, alpha);
+        e.error[0] *= scale();
+        return e;
+    }
+
+    Kind kind_;
+    bool mc_;
+    long long samples_;
+    std::uint64_t seed_;
+};
+
+AxisSpec cos_theta(int count, Placement placement, Warp warp = Warp::linear) {
+    AxisSpec a = tables::cos_theta_axis(count);
+    a.axis.placement = placement;
+    a.axis.warp = warp;
+    if (warp == Warp::square) a.meaning += "; stored at u = sqrt(cos(theta_o))";
+    return a;
+}
+
+AxisSpec roughness(int count, Placement placement) {
+    return {Axis{"roughness", 0.0, 1.0, count, placement, Warp::linear}, 0.0, 1.0,
+            "perceptual roughness r; GGX (and Charlie) alpha = r^2"};
+}
+
+AxisSpec alpha_sqrt_linear(int count) {
+    AxisSpec a = tables::alpha_axis(count);
+    a.axis.placement = Placement::endpoints;
+    return a;
+}
+
+nlohmann::json ggx_model(Visibility vis) {
+    return {{"brdf", "GGX microfacet, single scattering"},
+            {"distribution", "ggx"},
+            {"visibility", to_string(vis)},
+            {"fresnel", "Schlick, factored out: F0 (1 - (1 - v.h)^5) + (1 - v.h)^5"},
+            {"roughness", "alpha = perceptual_roughness^2"}};
+}
+
+const char* kQuadratureRule =
+    "per channel the core quadrature: ggx_split_sum, ggx_albedo_average, lobe_albedo "
+    "(Disney diffuse), sheen_charlie_albedo (adaptive Gauss-Kronrod (7,15)); error per value: "
+    "QUADPACK estimate";
+
+struct Entry {
+    Kind kind;
+    std::string preset, id, description, engine_source;
+    std::vector<AxisSpec> axes;
+    std::vector<std::string> channels;
+    nlohmann::json model;
+};
+
+TableDefinition make(Entry e) {
+    TableDefinition d;
+    d.id = e.id;
+    d.description = e.description;
+    d.axes = e.axes;
+    d.channels = e.channels;
+    d.supports_monte_carlo = true;
+    d.preset = e.preset;
+    nlohmann::json model = e.model;
+    model["preset"] = e.preset;
+    model["engine_source"] = e.engine_source;
+    const Kind kind = e.kind;
+    d.prepare = [kind, model](const TableSettings& s) {
+        PreparedTable p;
+        p.evaluator = std::make_unique<PresetEvaluator>(kind, s);
+        p.model = model;
+        p.method = s.method == Method::monte_carlo
+                       ? tables::monte_carlo_method("as the core tables: GGX visible normals (ggx_*), "
+                                                    "cosine hemisphere (disney_*), uniform + Charlie "
+                                                    "mixture (sheen_*)", s)
+                       : tables::quadrature_method(kQuadratureRule, kGgxAbsTolerance);
+        return p;
+    };
+    return d;
+}
+
+}  // namespace
+
+const std::vector<Preset>& presets() {
+    static const std::vector<Preset> all{
+        {"filament", "Filament's DFG: 128x128 RGB16F, multiscatter form (E = mix(R, G, f0)) and cloth in B",
+         PixelType::half},
+        {"unreal", "UE4's PreIntegratedGF: 128x32 scale and bias with Schlick-Smith G (k = alpha/2)",
+         PixelType::float32},
+        {"hdrp", "Unity HDRP's PreIntegratedFGD: 64x64, x = sqrt(NdotV), end points, GGX and Disney diffuse",
+         PixelType::half},
+        {"cycles", "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points) and table_ggx_Eavg",
+         PixelType::float32},
+        {"gltf", "glTF-IBL-Sampler's LUTs: GGX split sum (RG) and Charlie (B), cell centres, 128x128 here",
+         PixelType::half},
+        {"godot", "Godot 4's environment BRDF (an analytic fit in the engine) as a 128x128 split-sum table",
+         PixelType::half},
+    };
+    return all;
+}
+
+void register_preset_tables(std::vector<TableDefinition>& out) {
+    const nlohmann::json hc = ggx_model(Visibility::height_correlated);
+    nlohmann::json filament_model = hc;
+    filament_model["cloth"] = tables::charlie_sheen_model();
+    nlohmann::json hdrp_model = hc;
+    hdrp_model["diffuse"] = "Disney (Burley 2012), per unit base colour, F_D90 = 0.5 + 2 r cos^2(theta_d)";
+    nlohmann::json cycles_model = hc;
+    cycles_model["fresnel"] = "1";
+
+    out.push_back(make({Kind::filament_dfg, "filament", "filament_dfg",
+                        "Filament DFG LUT: specular = mix(R, G, f0), cloth (Charlie) in B",
+                        "google/filament libs/ibl/src/CubemapIBL.cpp (DFG, DFV_Multiscatter, DFV_Charlie_Uniform)",
+                        {cos_theta(128, Placement::center), roughness(128, Placement::center)},
+                        {"R: integral of f (1 - v.h)^5 cos(theta_i) dw_i (the B term)",
+                         "G: integral of f cos(theta_i) dw_i (A + B)",
+                         "B: Charlie cloth, integral of D_charlie V_neubelt cos(theta_i) dw_i"},
+                        filament_model}));
+    out.push_back(make({Kind::unreal_dfg, "unreal", "unreal_dfg",
+                        "UE4 PreIntegratedGF: specular = F0 * R + G, Schlick-Smith G with k = alpha/2",
+                        "Karis 2013, \"Real Shading in Unreal Engine 4\" (IntegrateBRDF); UE4 SystemTextures.cpp",
+                        {cos_theta(128, Placement::center), roughness(32, Placement::center)},
+                        {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i (scale)",
+                         "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i (bias)"},
+                        ggx_model(Visibility::schlick_smith)}));
+    out.push_back(make({Kind::hdrp_fgd, "hdrp", "hdrp_fgd",
+                        "HDRP PreIntegratedFGD_GGXDisneyDiffuse: specular = lerp(R, G, F0), diffuse = B + 0.5",
+                        "Unity-Technologies/Graphics com.unity.render-pipelines.core ShaderLibrary/"
+                        "ImageBasedLighting.hlsl (IntegrateGGXAndDisneyDiffuseFGD), PreIntegratedFGD.hlsl",
+                        {cos_theta(64, Placement::endpoints, Warp::square), roughness(64, Placement::endpoints)},
+                        {"R: integral of f (1 - v.h)^5 cos(theta_i) dw_i (the B term)",
+                         "G: integral of f cos(theta_i) dw_i (A + B)",
+                         "B: Disney diffuse albedo E(mu, r) - 0.5"},
+                        hdrp_model}));
+    out.push_back(make({Kind::cycles_ggx_e, "cycles", "cycles_ggx_e",
+                        "Cycles table_ggx_E: GGX albedo E, x = sqrt(alpha), rows mu, end points",
+                        "blender/blender intern/cycles/app/cycles_precompute.cpp, intern/cycles/scene/shader.tables",
+                        {alpha_sqrt_linear(32), cos_theta(32, Placement::endpoints)},
+                        {"E: integral of f cos(theta_i) dw_i with F = 1"}, cycles_model}));
+    out.push_back(make({Kind::cycles_ggx_e_avg, "cycles", "cycles_ggx_e_avg",
+                        "Cycles table_ggx_Eavg: GGX average albedo, x = sqrt(alpha), end points",
+                        "blender/blender intern/cycles/app/cycles_precompute.cpp, intern/cycles/scene/shader.tables",
+                        {alpha_sqrt_linear(32)}, {"E_avg: 2 * integral of E(mu) mu dmu"}, cycles_model}));
+    out.push_back(make({Kind::split_sum, "gltf", "gltf_ggx",
+                        "glTF-IBL-Sampler lut_ggx: specular = F0 * R + G",
+                        "KhronosGroup/glTF-IBL-Sampler lib/source/shaders/filter.frag (LUT)",
+                        {cos_theta(128, Placement::center), roughness(128, Placement::center)},
+                        {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i",
+                         "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i"},
+                        hc}));
+    out.push_back(make({Kind::gltf_charlie, "gltf", "gltf_charlie",
+                        "glTF-IBL-Sampler lut_charlie: Charlie sheen E in B (R, G unused)",
+                        "KhronosGroup/glTF-IBL-Sampler lib/source/shaders/filter.frag (LUT, cCharlie)",
+                        {cos_theta(128, Placement::center), roughness(128, Placement::center)},
+                        {"unused: 0", "unused: 0",
+                         "E: integral of D_charlie V_neubelt cos(theta_i) dw_i, alpha = sheen_roughness^2"},
+                        tables::charlie_sheen_model()}));
+    out.push_back(make({Kind::split_sum, "godot", "godot_dfg",
+                        "Godot environment BRDF as a table: specular = F0 * R + G (height-correlated GGX)",
+                        "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/"
+                        "scene_forward_clustered.glsl (environment BRDF approximation)",
+                        {cos_theta(128, Placement::center), roughness(128, Placement::center)},
+                        {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i",
+                         "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i"},
+                        hc}));
+}
+
+}  // namespace brdflut

@@ -1,0 +1,66 @@
+// Charlie sheen albedo table.
+//
+// Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF"
+#include <memory>
+
+#include "brdflut/random.h"
+#include "brdflut/sheen_integrals.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+namespace {
+
+const char* kQuadratureRule =
+    "adaptive Gauss-Kronrod (7,15) over the half vector: u = sin(theta_h) with the "
+    "distribution's measure made uniform, clipped analytically to the upper hemisphere, "
+    "nested with phi; error per value: QUADPACK estimate";
+const char* kMcSampler = "equal mixture of the uniform hemisphere and reflected Charlie normals";
+
+class SheenEvaluator final : public TexelEvaluator {
+public:
+    explicit SheenEvaluator(const TableSettings& s) : method_(s.method), samples_(s.samples), seed_(s.seed) {}
+
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        TexelValue out;
+        const bool mc = method_ == Method::monte_carlo;
+        const Estimate<1> e = mc ? sheen_charlie_albedo_mc(c[0], c[1], samples_, mix_seed(seed_, texel))
+                                 : sheen_charlie_albedo(c[0], c[1]);
+        out.value[0] = e.value[0];
+        out.error[0] = (mc ? tables::kMcErrorSigmas : 1.0) * e.error[0];
+        return out;
+    }
+
+private:
+    Method method_;
+    long long samples_;
+    std::uint64_t seed_;
+};
+
+}  // namespace
+
+nlohmann::json tables::charlie_sheen_model() {
+    return {{"brdf", "Charlie sheen (Estevez and Kulla 2017), no Fresnel"},
+            {"distribution", "charlie: (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)"},
+            {"visibility", "neubelt: 1 / (4 (mu_i + mu_o - mu_i mu_o))"},
+            {"roughness", "alpha = perceptual_roughness^2"}};
+}
+
+void register_sheen_tables(std::vector<TableDefinition>& out) {
+    TableDefinition d;
+    d.id = "sheen_charlie_albedo";
+    d.description = "Charlie sheen albedo E(mu, alpha) with Neubelt visibility (Filament's cloth DFG term)";
+    d.axes = {tables::cos_theta_axis(), tables::alpha_axis()};
+    d.channels = {"E: integral of D_charlie V_neubelt cos(theta_i) dw_i"};
+    d.supports_monte_carlo = true;
+    d.prepare = [](const TableSettings& s) {
+        PreparedTable p;
+        p.evaluator = std::make_unique<SheenEvaluator>(s);
+        p.model = tables::charlie_sheen_model();
+        p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
+                                                   : tables::quadrature_method(kQuadratureRule, kSheenAbsTolerance);
+        return p;
+    };
+    out.push_back(std::move(d));
+}
+
+}  // namespace brdflut
