@@ -64,6 +64,9 @@ void apply_config(CLI::App& app, const std::string& path) {
 int main(int argc, char** argv) {
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
+    // A file-size limit (ulimit -f) then fails the write with an error that
+    // is reported, instead of killing the process mid-file.
+    std::signal(SIGXFSZ, SIG_IGN);
 
     CLI::App app{"brdflut: precomputed BRDF lookup tables, exact to storage precision"};
     app.set_version_flag("--version", std::string(kName) + " " + kVersion);
