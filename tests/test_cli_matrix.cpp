@@ -81,6 +81,7 @@ TEST(CliMatrix, BadInputGivesAOneLineErrorNamingTheValueAndWhatIsAllowed) {
         for (const std::string& e : c.expect) EXPECT_NE(r.err.find(e), std::string::npos) << c.args << "\n" << r.err;
     }
     // No file was written (a refused png16 comes after the folder is made).
-    if (std::filesystem::exists(dir / "out"))
+    if (std::filesystem::exists(dir / "out")) {
         EXPECT_TRUE(std::filesystem::is_empty(dir / "out"));
+    }
 }
