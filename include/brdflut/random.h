@@ -3,9 +3,12 @@
 // done here (std::uniform_real_distribution is implementation-defined).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
+
+#include "brdflut/quadrature.h"
 
 namespace brdflut {
 
@@ -45,6 +48,16 @@ struct MeanAccumulator {
     double standard_error(int i) const {
         if (n < 2) return HUGE_VAL;
         return std::sqrt(m2[i] / static_cast<double>(n - 1) / static_cast<double>(n));
+    }
+    // value = the mean, error = its standard error.
+    Estimate<N> estimate() const {
+        Estimate<N> e;
+        for (int i = 0; i < N; ++i) {
+            e.value[static_cast<std::size_t>(i)] = mean[i];
+            e.error[static_cast<std::size_t>(i)] = standard_error(i);
+        }
+        e.evaluations = static_cast<int>(std::min<long long>(n, 1 << 30));
+        return e;
     }
 };
 

@@ -65,11 +65,7 @@ Estimate<1> dipole_total_reflectance_mc(const Dipole& d, long long samples, std:
         const double w = kTwoPi * r * d.profile(r) / p;
         acc.add(&w);
     }
-    Estimate<1> out;
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
+    return acc.estimate();
 }
 
 }  // namespace brdflut

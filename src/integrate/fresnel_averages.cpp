@@ -49,11 +49,7 @@ Estimate<1> average_mc(const Reflectance& F, long long samples, std::uint64_t se
         const double f = F(std::sqrt(1.0 - rng.uniform()));
         acc.add(&f);
     }
-    Estimate<1> out;
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
+    return acc.estimate();
 }
 
 }  // namespace

@@ -111,11 +111,7 @@ Estimate<1> lobe_albedo_mc(Lobe lobe, double mu_o, double p, long long samples,
         const double w = lobe_sample(lobe, wo, p, rng);
         acc.add(&w);
     }
-    Estimate<1> out;
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
+    return acc.estimate();
 }
 
 Estimate<1> lobe_albedo_average_mc(Lobe lobe, double p, long long samples, std::uint64_t seed) {
@@ -127,11 +123,7 @@ Estimate<1> lobe_albedo_average_mc(Lobe lobe, double p, long long samples, std::
         const double w = lobe_sample(lobe, direction_from_mu(mu), p, rng);
         acc.add(&w);
     }
-    Estimate<1> out;
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
+    return acc.estimate();
 }
 
 }  // namespace brdflut

@@ -136,10 +136,7 @@ Estimate<1> sheen_charlie_albedo_mc(double mu_o, double alpha, long long samples
         }
         acc.add(&w);
     }
-    out.value[0] = acc.mean[0];
-    out.error[0] = acc.standard_error(0);
-    out.evaluations = static_cast<int>(std::min<long long>(samples, 1 << 30));
-    return out;
+    return acc.estimate();
 }
 
 }  // namespace brdflut
