@@ -203,12 +203,8 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         opt.rule = KronrodRule::k31;
         std::array<double, 2> r{};
         auto add = [&](double sign, double s0, double s1) {
-            const Estimate<1> in = integrate_adaptive<1>(
-                [&](double s) {
-                    const double d = 1.0 / (1.0 + s * s);
-                    return std::array<double, 1>{2.0 * d * at(q, sign * (1.0 - s * s) * d)};
-                },
-                s0, s1, opt);
+            const Estimate<1> in = integrate_arc_tan_half<1>(
+                [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, sign, s0, s1, opt);
             r[0] += in.value[0];
             r[1] += in.error[0];
         };

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <vector>
 
+#include "integrate/half_circle.h"
 #include "integrate/reflection_clip.h"
 
 namespace brdflut {
@@ -107,17 +108,6 @@ struct SplitSumIntegrand {
     }
 };
 
-// cos(j pi / 8192), j = 0..8192: the trapezoid nodes on [0, pi] for up to
-// 8192 intervals, computed once.
-constexpr int kCosTableSteps = 8192;
-const std::vector<double>& cos_table() {
-    static const std::vector<double> table = [] {
-        std::vector<double> c(kCosTableSteps + 1);
-        for (int j = 0; j <= kCosTableSteps; ++j) c[static_cast<std::size_t>(j)] = std::cos(j * kPi / kCosTableSteps);
-        return c;
-    }();
-    return table;
-}
 
 }  // namespace
 
@@ -134,7 +124,6 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
     const Ggx ggx{alpha};
     const SplitSumIntegrand f(ggx, vis, mu_o, sin_o);
-    const std::vector<double>& cosines = cos_table();
     const double ln_alpha = std::log(alpha);
 
     // (1/2) sech^2(x) / pi: the measure in x times the phi normalization,
@@ -168,25 +157,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // sums agree.
     auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        auto sample = [&](int j) { return f.at(q, cosines[static_cast<std::size_t>(j)]); };
-        std::array<double, 2> ends = sample(0), mid = sample(kCosTableSteps);
-        std::array<double, 2> sum{0.5 * (ends[0] + mid[0]), 0.5 * (ends[1] + mid[1])};
-        std::array<double, 2> prev{HUGE_VAL, HUGE_VAL};
-        for (int n = 1; n <= kCosTableSteps / 2; n *= 2) {
-            // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
-            const int stride = kCosTableSteps / n;
-            for (int k = 0; k < n; ++k) {
-                const std::array<double, 2> y = sample((2 * k + 1) * stride / 2);
-                sum[0] += y[0];
-                sum[1] += y[1];
-            }
-            const double h = kPi / (2.0 * n);
-            const std::array<double, 2> cur{sum[0] * h, sum[1] * h};
-            const double err = std::abs(cur[0] - prev[0]) + std::abs(cur[1] - prev[1]);
-            if (n >= 4 && err <= tol) return {cur[0], cur[1], err};
-            prev = cur;
-        }
-        return {prev[0], prev[1], tol};
+        return detail::trapezoid_half_circle<2>([&](double cos_phi) { return f.at(q, cos_phi); }, tol);
     };
 
     // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
@@ -202,15 +173,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         inner_opt.rule = KronrodRule::k31;
         std::array<double, 3> r{};
         auto add = [&](double sign, double s0, double s1) {
-            const Estimate<2> in = integrate_adaptive<2>(
-                [&](double s) {
-                    const double d = 1.0 / (1.0 + s * s);
-                    std::array<double, 2> y = f.at(q, sign * (1.0 - s * s) * d);
-                    y[0] *= 2.0 * d;
-                    y[1] *= 2.0 * d;
-                    return y;
-                },
-                s0, s1, inner_opt);
+            const Estimate<2> in = detail::integrate_arc_tan_half<2>(
+                [&](double cos_phi) { return f.at(q, cos_phi); }, sign, s0, s1, inner_opt);
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
