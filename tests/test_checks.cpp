@@ -148,6 +148,9 @@ TEST(CliChecks, CompareInspectAndSampleAGeneratedFile) {
     EXPECT_EQ(c.exit_code, 0) << c.err;
     EXPECT_NE(c.out.find("described by its metadata"), std::string::npos) << c.out;
     EXPECT_NE(c.out.find("worst texels"), std::string::npos) << c.out;
+    const auto plotted = run_cli("compare " + f + " --plot '" + (dir / "err.png") + "'", dir);
+    EXPECT_EQ(plotted.exit_code, 0) << plotted.err;
+    EXPECT_EQ(test::read_file(dir / "err.png").substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
     const auto i = run_cli("inspect " + f, dir);
     EXPECT_EQ(i.exit_code, 0) << i.err;
     EXPECT_NE(i.out.find("\"table\": \"ggx_dfg\""), std::string::npos) << i.out;

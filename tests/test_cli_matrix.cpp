@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "test_support.h"
 
@@ -18,6 +19,7 @@ TEST(CliMatrix, BadInputGivesAOneLineErrorNamingTheValueAndWhatIsAllowed) {
         std::vector<std::string> expect;  // substrings of the message
     };
     const std::string o = " -o '" + (dir / "out") + "'";
+    std::ofstream(dir / "bad.toml") << "colour = \"red\"\n";
     const Case cases[] = {
         // generate: tables, sizes, axes
         {"generate nope" + o, 2, {"'nope'", "allowed: ggx_dfg"}},
@@ -63,6 +65,8 @@ TEST(CliMatrix, BadInputGivesAOneLineErrorNamingTheValueAndWhatIsAllowed) {
         {"generate dipole_profile_rgb --material jelly" + o, 2, {"jelly", "skin1"}},
         {"generate dipole_profile_rgb --sigma-s 1,2,3 --sigma-a 1,-1,1" + o, 2, {"sigma", "-1"}},
         {"generate oren_nayar_albedo --range sigma=-1:1" + o, 2, {"sigma", "-1:1"}},
+        {"generate --config '" + (dir / "missing.toml") + "'" + o, 1, {"cannot read config", "missing.toml"}},
+        {"generate --config '" + (dir / "bad.toml") + "'" + o, 2, {"key 'colour' is not an option of 'generate'"}},
         // other subcommands
         {"verify nope", 2, {"'nope'", "allowed:"}},
         {"verify ggx_dfg --samples 5", 2, {"--samples 5", "100 to"}},

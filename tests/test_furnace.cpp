@@ -82,3 +82,11 @@ TEST(CliFurnace, ExitCodeFollowsTheConservingModels) {
     EXPECT_EQ(bad.exit_code, 1) << bad.err;
     EXPECT_FALSE(nlohmann::json::parse(bad.out).at("pass").get<bool>());
 }
+
+TEST(CliFurnace, PlotWritesOnePngPerModel) {
+    test::TempDir dir;
+    const auto r = test::run_cli("furnace eon disney_sheen --size 8 --plot '" + (dir / "plots") + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* f : {"plots/furnace_eon.png", "plots/furnace_disney_sheen.png"})
+        EXPECT_EQ(test::read_file(dir / f).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << f;
+}
