@@ -10,21 +10,26 @@
 namespace brdflut {
 namespace {
 
+// Absolute tolerance of the quadrature at each quality.
+constexpr tables::Tolerances kTolerances{1e-5, kSheenAbsTolerance, 1e-12};
+
 const char* kQuadratureRule =
-    "adaptive Gauss-Kronrod (7,15) over the half vector: u = sin(theta_h) with the "
-    "distribution's measure made uniform, clipped analytically to the upper hemisphere, "
-    "nested with phi; error per value: QUADPACK estimate";
+    "closed form over phi (the integrand is rational in cos(phi) at fixed theta_h, clipped "
+    "to the upper hemisphere; Gauss-Kronrod (15,31) when mu > 0.98), adaptive Gauss-Kronrod "
+    "(7,15) over theta_h in ln(pi/2 - theta_h), split where the clip starts; error per "
+    "value: QUADPACK estimate plus the rounding of the closed form and the neglected tails";
 const char* kMcSampler = "equal mixture of the uniform hemisphere and reflected Charlie normals";
 
 class SheenEvaluator final : public TexelEvaluator {
 public:
-    explicit SheenEvaluator(const TableSettings& s) : method_(s.method), samples_(s.samples), seed_(s.seed) {}
+    explicit SheenEvaluator(const TableSettings& s)
+        : method_(s.method), samples_(s.samples), seed_(s.seed), abs_tol_(kTolerances.at(s.quality)) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         TexelValue out;
         const bool mc = method_ == Method::monte_carlo;
         const Estimate<1> e = mc ? sheen_charlie_albedo_mc(c[0], c[1], samples_, mix_seed(seed_, texel))
-                                 : sheen_charlie_albedo(c[0], c[1]);
+                                 : sheen_charlie_albedo(c[0], c[1], abs_tol_);
         out.value[0] = e.value[0];
         out.error[0] = (mc ? tables::kMcErrorSigmas : 1.0) * e.error[0];
         return out;
@@ -34,6 +39,7 @@ private:
     Method method_;
     long long samples_;
     std::uint64_t seed_;
+    double abs_tol_;
 };
 
 }  // namespace
@@ -57,7 +63,7 @@ void register_sheen_tables(std::vector<TableDefinition>& out) {
         p.evaluator = std::make_unique<SheenEvaluator>(s);
         p.model = tables::charlie_sheen_model();
         p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
-                                                   : tables::quadrature_method(kQuadratureRule, kSheenAbsTolerance);
+                                                   : tables::quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
         return p;
     };
     out.push_back(std::move(d));
