@@ -620,6 +620,17 @@ TEST(Cli, Png16OfATableWithValuesAboveOneIsRefusedWithExitTwoAndNoFile) {
     EXPECT_TRUE(std::filesystem::is_empty(out)) << "no file, not even a temporary one";
 }
 
+TEST(Cli, Png16OfSeveralTablesWritesNoneWhenALaterOneIsRefused) {
+    TempDir dir;
+    const std::string out = dir / "o";
+    // ggx_dfg fits in [0, 1]; the Burley diffuse albedo, named after it, does not.
+    const auto r =
+        run_cli("generate ggx_dfg disney_diffuse_albedo --size 8 --format png16 -o '" + out + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("table 'disney_diffuse_albedo'"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::is_empty(out)) << "ggx_dfg.png was written before the refusal";
+}
+
 // ---------------------------------------------------------------- reading back
 
 TEST(ReadTableImage, ReadsEveryBinaryFormatBackToTheStoredValuesAndMetadata) {

@@ -9,6 +9,7 @@
 #include "brdflut/formats.h"
 #include "brdflut/generate.h"
 #include "cli/commands.h"
+#include "io/table_checks.h"
 
 namespace brdflut::cli {
 namespace {
@@ -128,7 +129,12 @@ int run_generate(const GenerateArgs& a) {
     if (ec || !std::filesystem::is_directory(a.output))
         throw RuntimeError("cannot create output folder '" + a.output + "'" + (ec ? ": " + ec.message() : ""));
 
+    // Every table is computed and checked against the storage before the
+    // first file is written, so a table that cannot be stored (a value
+    // outside png16's [0, 1], say) leaves no partial set of files behind.
     const bool bar = !a.quiet && stderr_is_terminal();
+    std::vector<Table> tables;
+    std::vector<double> seconds;
     for (std::size_t i = 0; i < defs.size(); ++i) {
         if (settings[i].axes.empty()) {
             if (!a.quiet) std::printf("skipped %s: it has no Monte Carlo method\n", defs[i]->id.c_str());
@@ -139,16 +145,20 @@ int run_generate(const GenerateArgs& a) {
         GenerateOptions opt;
         opt.threads = a.threads;
         opt.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-        const Table table = generate(*defs[i], settings[i], opt);
+        tables.push_back(generate(*defs[i], settings[i], opt));
         progress.finish();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        check_storable(tables.back(), storage);
+    }
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+        const Table& table = tables[i];
         const std::string path =
             (std::filesystem::path(a.output) / (table.id + "." + file_extension(format))).string();
         write_table(path, table, pixel, format);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (!a.quiet) {
             std::printf("wrote %s: %dx%d, %d channel(s), %s, error bound %.2e, %.2f s\n", path.c_str(),
                         table.width(), table.height(), table.channel_count(),
-                        std::string(to_string(storage)).c_str(), error_bound(table, storage), seconds);
+                        std::string(to_string(storage)).c_str(), error_bound(table, storage), seconds[i]);
             std::fflush(stdout);
         }
     }
