@@ -695,6 +695,9 @@ TEST(Cli, CompareAndInspectReadKtx2AndPng16Files) {
         EXPECT_EQ(j.at("table"), "ggx_dfg") << r.out;
         r = run_cli("inspect '" + (dir / name) + "' --json", dir);
         ASSERT_EQ(r.exit_code, 0) << name << "\n" << r.err;
-        EXPECT_EQ(nlohmann::json::parse(r.out).at("metadata").at("table"), "ggx_dfg");
+        const auto info = nlohmann::json::parse(r.out);
+        EXPECT_EQ(info.at("metadata").at("table"), "ggx_dfg");
+        // The file's own sample type, which is the metadata's too.
+        EXPECT_EQ(info.at("pixel"), info.at("metadata").at("pixel")) << name;
     }
 }

@@ -23,6 +23,7 @@ struct ExrImage {
     std::vector<std::string> channel_names;  // in file order (R, G, B, A first)
     std::vector<double> pixels;              // row-major, channels interleaved
     PixelType pixel = PixelType::float32;
+    bool unorm16 = false;  // 16-bit integers v * 65535 (png16); pixels holds them as v
     bool has_metadata = false;
     nlohmann::json metadata;
 };

@@ -190,7 +190,7 @@ int run_inspect(const std::string& file, bool json) {
         j["file"] = file;
         j["width"] = img.width;
         j["height"] = img.height;
-        j["pixel"] = to_string(img.pixel);
+        j["pixel"] = img.unorm16 ? std::string("unorm16") : std::string(to_string(img.pixel));
         j["metadata"] = img.has_metadata ? img.metadata : nlohmann::json(nullptr);
         nlohmann::json ch = nlohmann::json::array();
         for (const auto& s : stats)
@@ -200,7 +200,7 @@ int run_inspect(const std::string& file, bool json) {
         return 0;
     }
     std::printf("file:   %s\nsize:   %dx%d, %zu channel(s), %s\n", file.c_str(), img.width, img.height,
-                img.channel_names.size(), std::string(to_string(img.pixel)).c_str());
+                img.channel_names.size(), img.unorm16 ? "unorm16" : std::string(to_string(img.pixel)).c_str());
     std::printf("\n%-8s %-14s %-14s %-14s %s\n", "channel", "min", "max", "mean", "non-finite");
     for (const auto& s : stats)
         std::printf("%-8s %-14.7g %-14.7g %-14.7g %lld\n", s.channel.c_str(), s.min, s.max, s.mean, s.non_finite);

@@ -185,6 +185,7 @@ ExrImage read_png16_image(const Bytes& f) {
     img.channel_names.assign(kChannelNames, kChannelNames + channels);
     img.pixels.reserve(samples.size());
     for (const std::uint16_t q : samples) img.pixels.push_back(q / 65535.0);
+    img.unorm16 = true;
     if (!text.empty()) parse_metadata(f, img, text);
     return img;
 }
