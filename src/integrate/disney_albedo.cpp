@@ -28,7 +28,9 @@
 //   P = 1 - ln((t^2 + a^2)/(t^2 + 1)) / ln(a^2),  t = tan(theta_h),
 // (times dphi / 2 pi), roughly ln(t) rescaled: the lobe is smooth in P for any
 // alpha. The azimuth is clipped to the upper hemisphere as in the GGX
-// integrals (reflection_clip.h); P is split at the band limits.
+// integrals (reflection_clip.h): P covers the full circles below the clipped
+// band t in (t_a, t_b); across the band the variable is ln(t), in which the
+// clipped arc's end moves steadily at every view angle.
 #include <cmath>
 
 #include "brdflut/disney.h"
@@ -193,29 +195,63 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         return trapezoid_half_circle<1>(
             [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, tol);
     };
-    // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), in
-    // s = tan(phi / 2) (rational integrand, no trigonometric function); when
-    // phi_max is beyond pi/2 the part past pi/2 is taken in pi - phi, so that
-    // s stays within [0, 1].
+    // One Gauss-Kronrod (15, 31) panel on [-1, 1] for an even integrand g:
+    // 16 evaluations; {integral over [0, 1], QUADPACK error estimate}.
+    auto even_panel = [](auto&& g) -> std::array<double, 2> {
+        using R = KronrodNodes<31>;
+        double y[16];
+        y[15] = g(0.0);
+        for (std::size_t j = 0; j < 15; ++j) y[j] = g(R::x[j]);
+        double k = R::wk[15] * y[15], gauss = R::wg[7] * y[15];
+        for (std::size_t j = 0; j < 15; ++j) {
+            k += 2.0 * R::wk[j] * y[j];
+            if (j % 2 == 1) gauss += 2.0 * R::wg[j / 2] * y[j];
+        }
+        double asc = R::wk[15] * std::abs(y[15] - 0.5 * k);
+        for (std::size_t j = 0; j < 15; ++j) asc += 2.0 * R::wk[j] * std::abs(y[j] - 0.5 * k);
+        // The panel on [-1, 1] has half-width 1; [0, 1] carries half of it.
+        asc *= 0.5;
+        double err = 0.5 * std::abs(k - gauss);
+        if (asc != 0.0 && err != 0.0) {
+            const double r = std::min(1.0, 200.0 * err / asc);
+            err = asc * r * std::sqrt(r);
+        }
+        err = std::max(err, 50.0 * 2.220446049250313e-16 * std::abs(0.5 * k));
+        return {0.5 * k, err};
+    };
+    // Integral over the clipped circle phi in [0, phi_max], cos(phi_max) = c in
+    // (-1, 1), in s = tan(phi / 2) (rational integrand, no trigonometric
+    // function); when phi_max is beyond pi/2 the part past pi/2 is taken in
+    // pi - phi, so that s stays within [0, 1]. The integrand is even in s, so
+    // the part over [0, s1] first tries one symmetric panel over [-s1, s1]
+    // (16 evaluations), kept when its estimate is within tol, and adaptive
+    // (15, 31) over [0, s1] otherwise. The panel is skipped for the arcs that
+    // end at the horizon with phi_max in [acos(kWideArc), pi/2]: they rarely
+    // pass it.
+    constexpr double kWideArc = 0.4;
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 2> {
         const Ring q = ring(t);
+        auto f = [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; };
         AdaptiveOptions opt;
         opt.rule = KronrodRule::k31;
-        std::array<double, 2> r{};
-        auto add = [&](double sign, double s0, double s1) {
-            const Estimate<1> in = integrate_arc_tan_half<1>(
-                [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, sign, s0, s1, opt);
-            r[0] += in.value[0];
-            r[1] += in.error[0];
+        opt.abs_tol = c >= 0.0 ? tol : 0.5 * tol;
+        auto head = [&](double s1) -> std::array<double, 2> {
+            if (c < 0.0 || c >= kWideArc) {
+                const std::array<double, 2> r = even_panel([&](double v) {
+                    const double s = s1 * v, d = 1.0 / (1.0 + s * s);
+                    return 2.0 * s1 * d * at(q, (1.0 - s * s) * d);
+                });
+                if (r[1] <= opt.abs_tol) return r;
+            }
+            const Estimate<1> e = integrate_arc_tan_half<1>(f, 1.0, 0.0, s1, opt);
+            return {e.value[0], e.error[0]};
         };
-        if (c >= 0.0) {
-            opt.abs_tol = tol;
-            add(1.0, 0.0, std::sqrt((1.0 - c) / (1.0 + c)));
-        } else {
-            opt.abs_tol = 0.5 * tol;
-            add(1.0, 0.0, 1.0);
-            add(-1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0);
-        }
+        if (c >= 0.0) return head(std::sqrt((1.0 - c) / (1.0 + c)));
+        std::array<double, 2> r = head(1.0);
+        const Estimate<1> tail =
+            integrate_arc_tan_half<1>(f, -1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0, opt);
+        r[0] += tail.value[0];
+        r[1] += tail.error[0];
         return r;
     };
 
@@ -237,31 +273,32 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
             0.0, p_a, outer_opt));
     }
     if (sin_o > 0.0) {
-        constexpr int kPieces = 4;
-        AdaptiveOptions piece_opt = outer_opt;
-        piece_opt.abs_tol = outer_opt.abs_tol / kPieces;
-        piece_opt.rule = KronrodRule::k15;
-        // Across the clipped band the phi integral behaves like (t - t_a)^(3/2)
-        // at its start; P = p_a + len s(u) with the smoothstep s flattens both ends.
-        const double p_b = p_of_t(band.t_b), len = p_b - p_a;
-        // Four pieces of Gauss-Kronrod (7, 15): single (15, 31) panels missed
-        // the narrow tail near t_b at grazing angles (by 1.5e-9 against an
-        // estimate of 3e-11); this choice covers every default texel.
-        for (int k = 0; k < kPieces; ++k) {
-            accumulate(integrate_adaptive<2>(
-                [&](double u) -> std::array<double, 2> {
-                    const double t = t_of_p(p_a + len * smoothstep(u));
-                    const double c = reflection_cos_phi_max(t, mu_o, sin_o);
-                    if (c >= 1.0) return {0.0, 0.0};
-                    const double w = len * smoothstep_slope(u) * kInvPi;
-                    if (!(w > 0.0)) return {0.0, 0.0};
-                    const double tol = inner_tol(w);
-                    const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
-                                                             : full_circle(t, tol);
-                    return {r[0] * w, r[1] * w};
-                },
-                static_cast<double>(k) / kPieces, static_cast<double>(k + 1) / kPieces, piece_opt));
-        }
+        // Across the clipped band the variable is tau = ln(t): there
+        // c(t) = (mu_o / sin_o) sinh(tau) and the band is tau in [-T, T],
+        // T = ln(t_b), so the arc's end moves at a steady pace however wide
+        // the band is (at grazing it spans t_b / t_a = ((1 + sin_o)/mu_o)^2,
+        // which P crushes against its ends). The phi integral behaves like
+        // (T -+ tau)^(3/2) at both ends; tau = -T + 2 T s(u) with the
+        // smoothstep s flattens them. dP/dtau = 2 (1 - a^2) t^2 /
+        // (|ln a^2| (t^2 + a^2)(t^2 + 1)).
+        // One adaptive Gauss-Kronrod (15, 31) integral over u in [0, 1].
+        const double big_t = std::log(band.t_b);
+        const double dp_scale = 2.0 * (1.0 - a2) / -ln_a2;
+        accumulate(integrate_adaptive<2>(
+            [&](double u) -> std::array<double, 2> {
+                const double t = std::exp(big_t * (2.0 * smoothstep(u) - 1.0));
+                const double c = reflection_cos_phi_max(t, mu_o, sin_o);
+                if (c >= 1.0) return {0.0, 0.0};
+                const double t2 = t * t;
+                const double w = 2.0 * big_t * smoothstep_slope(u) * dp_scale * t2 /
+                                 ((t2 + a2) * (t2 + 1.0)) * kInvPi;
+                if (!(w > 0.0)) return {0.0, 0.0};
+                const double tol = inner_tol(w);
+                const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
+                                                         : full_circle(t, tol);
+                return {r[0] * w, r[1] * w};
+            },
+            0.0, 1.0, outer_opt));
     }
     return out;
 }
