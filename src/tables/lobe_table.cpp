@@ -18,7 +18,9 @@ const char* kQuadratureRule =
     "the upper hemisphere for the clearcoat (Gauss-Kronrod (15,31) in the GTR1 measure below "
     "the clipped band and in ln(tan(theta_h)) across it; doubling trapezoid on full circles, "
     "Gauss-Kronrod (15,31) in tan(phi/2) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
-    "averages over theta_o; error per value: QUADPACK estimate";
+    "averages over theta_o, the clearcoat's directly over the half vector (GTR1 measure), "
+    "wo.h and the azimuth of wo about it (Gauss-Kronrod (15,31), trapezoid on full circles); "
+    "error per value: QUADPACK estimate";
 
 std::string mc_sampler(Lobe lobe) {
     return lobe == Lobe::disney_clearcoat ? "GTR1 half vectors (Burley 2012)"
