@@ -164,7 +164,7 @@ TEST(Lobes, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
 
 TEST(DisneyClearcoat, ErrorEstimateIsHonestOnADenseGridDownToGrazing) {
     // The clearcoat's rule (trapezoid on full circles, clipped arcs in
-    // tan(phi/2), K31 over P and ln(tan(theta_h))) across gloss and view
+    // tan(phi/4), K31 over P and ln(tan(theta_h))) across gloss and view
     // angles, grazing included.
     for (double g : {0.5 / 128, 0.2, 0.45, 0.7, 0.85, 127.5 / 128})
         for (double mu : {kGrazing, 0.01, 0.03, 0.08, 0.2, 0.35, 0.6, 0.91, 0.995}) {

@@ -200,15 +200,17 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         return f * g1_o * g1_i * (1.0 + q.b1 * cos_phi);
     };
 
-    // Error budget: 0.4 abs_tol for each outer range (two), 0.1 abs_tol for
-    // the inner integrals it accumulates. The inner tolerance at an outer node
+    // Error budget: 0.2 abs_tol for each outer range (two), 0.25 abs_tol for
+    // the inner integrals each accumulates (their QUADPACK estimates jump by
+    // orders of magnitude per refinement, so the share mostly decides how
+    // often an inner panel passes). The inner tolerance at an outer node
     // is that budget over the node's weight times the range (so the weighted
     // inner errors integrate to at most the budget), capped.
     AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.4 * abs_tol;
+    outer_opt.abs_tol = 0.2 * abs_tol;
     outer_opt.controlled = 1;
     outer_opt.rule = KronrodRule::k31;
-    const double inner_budget = 0.05 * abs_tol;
+    const double inner_budget = 0.25 * abs_tol;
     constexpr double kMaxInnerTol = 1e-6;
     auto inner_tol = [&](double weight) {
         return weight * kMaxInnerTol > inner_budget ? inner_budget / weight : kMaxInnerTol;
@@ -222,39 +224,32 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
             [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, tol);
     };
     // Integral over the clipped circle phi in [0, phi_max], cos(phi_max) = c in
-    // (-1, 1), in s = tan(phi / 2) (rational integrand, no trigonometric
-    // function); when phi_max is beyond pi/2 the part past pi/2 is taken in
-    // pi - phi, so that s stays within [0, 1]. The integrand is even in s, so
-    // the part over [0, s1] first tries one symmetric panel over [-s1, s1]
-    // (16 evaluations), kept when its estimate is within tol, and adaptive
-    // (15, 31) over [0, s1] otherwise. The panel is skipped for the arcs that
-    // end at the horizon with phi_max in [acos(kWideArc), pi/2]: they rarely
-    // pass it.
-    constexpr double kWideArc = 0.4;
+    // (-1, 1), in s = tan(phi / 4): cos(phi) = (1 - 6 s^2 + s^4) / (1 + s^2)^2,
+    // dphi = 4 ds / (1 + s^2), so the integrand is rational in s (no
+    // trigonometric function) and s stays within [0, 1] for any phi_max <= pi,
+    // s1 = tan(phi_max / 4) = sin(phi_max/2) / (1 + cos(phi_max/2)). Adaptive
+    // (15, 31) over [0, s1]; short arcs (c >= kShortArc) first try one
+    // symmetric panel over [-s1, s1] (the integrand is even in s: 16
+    // evaluations), kept when its estimate is within tol. Longer arcs rarely
+    // pass it: the G1(mu_i) factor has branch points near the arc's end.
+    constexpr double kShortArc = 0.2;
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 2> {
         const Ring q = ring(t);
-        auto f = [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; };
+        const double s1 = std::sqrt(0.5 * (1.0 - c)) / (1.0 + std::sqrt(0.5 * (1.0 + c)));
+        auto h = [&](double s) {
+            const double s2 = s * s, d = 1.0 / (1.0 + s2);
+            return 4.0 * d * at(q, (1.0 - s2 * (6.0 - s2)) * d * d);
+        };
+        if (c >= kShortArc) {
+            const std::array<double, 2> r = even_panel([&](double v) { return s1 * h(s1 * v); });
+            if (r[1] <= tol) return r;
+        }
         AdaptiveOptions opt;
         opt.rule = KronrodRule::k31;
-        opt.abs_tol = c >= 0.0 ? tol : 0.5 * tol;
-        auto head = [&](double s1) -> std::array<double, 2> {
-            if (c < 0.0 || c >= kWideArc) {
-                const std::array<double, 2> r = even_panel([&](double v) {
-                    const double s = s1 * v, d = 1.0 / (1.0 + s * s);
-                    return 2.0 * s1 * d * at(q, (1.0 - s * s) * d);
-                });
-                if (r[1] <= opt.abs_tol) return r;
-            }
-            const Estimate<1> e = integrate_arc_tan_half<1>(f, 1.0, 0.0, s1, opt);
-            return {e.value[0], e.error[0]};
-        };
-        if (c >= 0.0) return head(std::sqrt((1.0 - c) / (1.0 + c)));
-        std::array<double, 2> r = head(1.0);
-        const Estimate<1> tail =
-            integrate_arc_tan_half<1>(f, -1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0, opt);
-        r[0] += tail.value[0];
-        r[1] += tail.error[0];
-        return r;
+        opt.abs_tol = tol;
+        const Estimate<1> e = integrate_adaptive<1>(
+            [&](double s) { return std::array<double, 1>{h(s)}; }, 0.0, s1, opt);
+        return {e.value[0], e.error[0]};
     };
 
     auto accumulate = [&](const Estimate<2>& e) {
@@ -283,24 +278,29 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         // (T -+ tau)^(3/2) at both ends; tau = -T + 2 T s(u) with the
         // smoothstep s flattens them. dP/dtau = 2 (1 - a^2) t^2 /
         // (|ln a^2| (t^2 + a^2)(t^2 + 1)).
-        // One adaptive Gauss-Kronrod (15, 31) integral over u in [0, 1].
         const double big_t = std::log(band.t_b);
         const double dp_scale = 2.0 * (1.0 - a2) / -ln_a2;
-        accumulate(integrate_adaptive<2>(
-            [&](double u) -> std::array<double, 2> {
-                const double t = std::exp(big_t * (2.0 * smoothstep(u) - 1.0));
-                const double c = reflection_cos_phi_max(t, mu_o, sin_o);
-                if (c >= 1.0) return {0.0, 0.0};
-                const double t2 = t * t;
-                const double w = 2.0 * big_t * smoothstep_slope(u) * dp_scale * t2 /
-                                 ((t2 + a2) * (t2 + 1.0)) * kInvPi;
-                if (!(w > 0.0)) return {0.0, 0.0};
-                const double tol = inner_tol(w);
-                const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
-                                                         : full_circle(t, tol);
-                return {r[0] * w, r[1] * w};
-            },
-            0.0, 1.0, outer_opt));
+        auto band_integrand = [&](double u) -> std::array<double, 2> {
+            const double t = std::exp(big_t * (2.0 * smoothstep(u) - 1.0));
+            const double c = reflection_cos_phi_max(t, mu_o, sin_o);
+            if (c >= 1.0) return {0.0, 0.0};
+            const double t2 = t * t;
+            const double w = 2.0 * big_t * smoothstep_slope(u) * dp_scale * t2 /
+                             ((t2 + a2) * (t2 + 1.0)) * kInvPi;
+            if (!(w > 0.0)) return {0.0, 0.0};
+            const double tol = inner_tol(w);
+            const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
+                                                     : full_circle(t, tol);
+            return {r[0] * w, r[1] * w};
+        };
+        // Past T = 1.5 (mu_o below about 0.42) one panel over the band always
+        // fails; starting from its two halves (split at tau = 0) saves it.
+        const int pieces = big_t > 1.5 ? 2 : 1;
+        AdaptiveOptions piece_opt = outer_opt;
+        piece_opt.abs_tol = outer_opt.abs_tol / pieces;
+        for (int k = 0; k < pieces; ++k)
+            accumulate(integrate_adaptive<2>(band_integrand, static_cast<double>(k) / pieces,
+                                             static_cast<double>(k + 1) / pieces, piece_opt));
     }
     return out;
 }

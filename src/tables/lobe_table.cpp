@@ -17,7 +17,7 @@ const char* kQuadratureRule =
     "coordinates about wo for the sheen, over the GTR1 half-vector measure with phi clipped to "
     "the upper hemisphere for the clearcoat (Gauss-Kronrod (15,31) in the GTR1 measure below "
     "the clipped band and in ln(tan(theta_h)) across it; doubling trapezoid on full circles, "
-    "Gauss-Kronrod (15,31) in tan(phi/2) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
+    "Gauss-Kronrod (15,31) in tan(phi/4) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
     "averages over theta_o, the clearcoat's directly over the half vector (GTR1 measure), "
     "wo.h and the azimuth of wo about it (Gauss-Kronrod (15,31), trapezoid on full circles); "
     "error per value: QUADPACK estimate";
