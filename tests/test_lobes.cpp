@@ -164,7 +164,8 @@ TEST(Lobes, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
 
 TEST(DisneyClearcoat, ErrorEstimateIsHonestOnADenseGridDownToGrazing) {
     // The clearcoat's rule (trapezoid on full circles, clipped arcs in
-    // tan(phi/2), K31 over P) across gloss and view angles, grazing included.
+    // tan(phi/4), K31 over P and ln(tan(theta_h))) across gloss and view
+    // angles, grazing included.
     for (double g : {0.5 / 128, 0.2, 0.45, 0.7, 0.85, 127.5 / 128})
         for (double mu : {kGrazing, 0.01, 0.03, 0.08, 0.2, 0.35, 0.6, 0.91, 0.995}) {
             const Estimate<1> e = lobe_albedo(Lobe::disney_clearcoat, mu, g, 1e-9);
@@ -185,6 +186,34 @@ TEST(Lobes, AverageErrorEstimateBoundsTheDifferenceToAFinerRun) {
                 << to_string(lobe) << " p " << p;
             EXPECT_LE(e.error[0], 1e-9) << to_string(lobe) << " p " << p;
         }
+}
+
+TEST(DisneyClearcoat, AverageMatchesTheAverageOfTheDirectionalAlbedo) {
+    // The average is integrated over the half vector and wo directly; here it
+    // is taken the long way, 2 * integral of E(mu) mu dmu in theta with the
+    // directional albedo's own quadrature (broken at mu = 1/4, 1/16, 1/64).
+    const double breaks[] = {0.0, std::acos(0.25), std::acos(1.0 / 16), std::acos(1.0 / 64),
+                             0.5 * kPi};
+    for (double g : {0.5 / 128, 0.45, 127.5 / 128}) {
+        AdaptiveOptions opt;
+        opt.abs_tol = 1e-12;
+        opt.controlled = 1;
+        double value = 0.0, error = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const Estimate<2> e = integrate_adaptive<2>(
+                [&](double theta) -> std::array<double, 2> {
+                    const Estimate<1> in = lobe_albedo(Lobe::disney_clearcoat, std::cos(theta), g, 1e-11);
+                    const double w = std::sin(2.0 * theta);
+                    return {w * in.value[0], w * in.error[0]};
+                },
+                breaks[k], breaks[k + 1], opt);
+            value += e.value[0];
+            error += e.error[0] + e.value[1];
+        }
+        const Estimate<1> direct = lobe_albedo_average(Lobe::disney_clearcoat, g);
+        EXPECT_NEAR(direct.value[0], value, direct.error[0] + error + 1e-14) << "g " << g;
+        EXPECT_LE(direct.error[0], 1e-9) << "g " << g;
+    }
 }
 
 TEST(Lobes, AgreeWithMonteCarloWithinFourStandardErrors) {

@@ -28,7 +28,9 @@
 //   P = 1 - ln((t^2 + a^2)/(t^2 + 1)) / ln(a^2),  t = tan(theta_h),
 // (times dphi / 2 pi), roughly ln(t) rescaled: the lobe is smooth in P for any
 // alpha. The azimuth is clipped to the upper hemisphere as in the GGX
-// integrals (reflection_clip.h); P is split at the band limits.
+// integrals (reflection_clip.h): P covers the full circles below the clipped
+// band t in (t_a, t_b); across the band the variable is ln(t), in which the
+// clipped arc's end moves steadily at every view angle.
 #include <cmath>
 
 #include "brdflut/disney.h"
@@ -50,6 +52,32 @@ double schlick_pair_phi_average(double m, double d2, double w_i, double w_o) {
 // with zero slope at both ends.
 double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
 double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
+
+// One Gauss-Kronrod (15, 31) panel on [-1, 1] for an integrand g that is even:
+// 16 evaluations. Returns {integral over [0, 1], QUADPACK error estimate}.
+template <class G>
+std::array<double, 2> even_panel(G&& g) {
+    using R = KronrodNodes<31>;
+    double y[16];
+    y[15] = g(0.0);
+    for (std::size_t j = 0; j < 15; ++j) y[j] = g(R::x[j]);
+    double k = R::wk[15] * y[15], gauss = R::wg[7] * y[15];
+    for (std::size_t j = 0; j < 15; ++j) {
+        k += 2.0 * R::wk[j] * y[j];
+        if (j % 2 == 1) gauss += 2.0 * R::wg[j / 2] * y[j];
+    }
+    double asc = R::wk[15] * std::abs(y[15] - 0.5 * k);
+    for (std::size_t j = 0; j < 15; ++j) asc += 2.0 * R::wk[j] * std::abs(y[j] - 0.5 * k);
+    // The panel on [-1, 1] has half-width 1; [0, 1] carries half of it.
+    asc *= 0.5;
+    double err = 0.5 * std::abs(k - gauss);
+    if (asc != 0.0 && err != 0.0) {
+        const double r = std::min(1.0, 200.0 * err / asc);
+        err = asc * r * std::sqrt(r);
+    }
+    err = std::max(err, 50.0 * 2.220446049250313e-16 * std::abs(0.5 * k));
+    return {0.5 * k, err};
+}
 
 }  // namespace
 
@@ -172,15 +200,17 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         return f * g1_o * g1_i * (1.0 + q.b1 * cos_phi);
     };
 
-    // Error budget: 0.4 abs_tol for each outer range (two), 0.1 abs_tol for
-    // the inner integrals it accumulates. The inner tolerance at an outer node
+    // Error budget: 0.2 abs_tol for each outer range (two), 0.25 abs_tol for
+    // the inner integrals each accumulates (their QUADPACK estimates jump by
+    // orders of magnitude per refinement, so the share mostly decides how
+    // often an inner panel passes). The inner tolerance at an outer node
     // is that budget over the node's weight times the range (so the weighted
     // inner errors integrate to at most the budget), capped.
     AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.4 * abs_tol;
+    outer_opt.abs_tol = 0.2 * abs_tol;
     outer_opt.controlled = 1;
     outer_opt.rule = KronrodRule::k31;
-    const double inner_budget = 0.05 * abs_tol;
+    const double inner_budget = 0.25 * abs_tol;
     constexpr double kMaxInnerTol = 1e-6;
     auto inner_tol = [&](double weight) {
         return weight * kMaxInnerTol > inner_budget ? inner_budget / weight : kMaxInnerTol;
@@ -193,30 +223,33 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         return trapezoid_half_circle<1>(
             [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, tol);
     };
-    // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), in
-    // s = tan(phi / 2) (rational integrand, no trigonometric function); when
-    // phi_max is beyond pi/2 the part past pi/2 is taken in pi - phi, so that
-    // s stays within [0, 1].
+    // Integral over the clipped circle phi in [0, phi_max], cos(phi_max) = c in
+    // (-1, 1), in s = tan(phi / 4): cos(phi) = (1 - 6 s^2 + s^4) / (1 + s^2)^2,
+    // dphi = 4 ds / (1 + s^2), so the integrand is rational in s (no
+    // trigonometric function) and s stays within [0, 1] for any phi_max <= pi,
+    // s1 = tan(phi_max / 4) = sin(phi_max/2) / (1 + cos(phi_max/2)). Adaptive
+    // (15, 31) over [0, s1]; short arcs (c >= kShortArc) first try one
+    // symmetric panel over [-s1, s1] (the integrand is even in s: 16
+    // evaluations), kept when its estimate is within tol. Longer arcs rarely
+    // pass it: the G1(mu_i) factor has branch points near the arc's end.
+    constexpr double kShortArc = 0.2;
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 2> {
         const Ring q = ring(t);
+        const double s1 = std::sqrt(0.5 * (1.0 - c)) / (1.0 + std::sqrt(0.5 * (1.0 + c)));
+        auto h = [&](double s) {
+            const double s2 = s * s, d = 1.0 / (1.0 + s2);
+            return 4.0 * d * at(q, (1.0 - s2 * (6.0 - s2)) * d * d);
+        };
+        if (c >= kShortArc) {
+            const std::array<double, 2> r = even_panel([&](double v) { return s1 * h(s1 * v); });
+            if (r[1] <= tol) return r;
+        }
         AdaptiveOptions opt;
         opt.rule = KronrodRule::k31;
-        std::array<double, 2> r{};
-        auto add = [&](double sign, double s0, double s1) {
-            const Estimate<1> in = integrate_arc_tan_half<1>(
-                [&](double cos_phi) { return std::array<double, 1>{at(q, cos_phi)}; }, sign, s0, s1, opt);
-            r[0] += in.value[0];
-            r[1] += in.error[0];
-        };
-        if (c >= 0.0) {
-            opt.abs_tol = tol;
-            add(1.0, 0.0, std::sqrt((1.0 - c) / (1.0 + c)));
-        } else {
-            opt.abs_tol = 0.5 * tol;
-            add(1.0, 0.0, 1.0);
-            add(-1.0, std::sqrt((1.0 + c) / (1.0 - c)), 1.0);
-        }
-        return r;
+        opt.abs_tol = tol;
+        const Estimate<1> e = integrate_adaptive<1>(
+            [&](double s) { return std::array<double, 1>{h(s)}; }, 0.0, s1, opt);
+        return {e.value[0], e.error[0]};
     };
 
     auto accumulate = [&](const Estimate<2>& e) {
@@ -237,32 +270,165 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
             0.0, p_a, outer_opt));
     }
     if (sin_o > 0.0) {
-        constexpr int kPieces = 4;
+        // Across the clipped band the variable is tau = ln(t): there
+        // c(t) = (mu_o / sin_o) sinh(tau) and the band is tau in [-T, T],
+        // T = ln(t_b), so the arc's end moves at a steady pace however wide
+        // the band is (at grazing it spans t_b / t_a = ((1 + sin_o)/mu_o)^2,
+        // which P crushes against its ends). The phi integral behaves like
+        // (T -+ tau)^(3/2) at both ends; tau = -T + 2 T s(u) with the
+        // smoothstep s flattens them. dP/dtau = 2 (1 - a^2) t^2 /
+        // (|ln a^2| (t^2 + a^2)(t^2 + 1)).
+        const double big_t = std::log(band.t_b);
+        const double dp_scale = 2.0 * (1.0 - a2) / -ln_a2;
+        auto band_integrand = [&](double u) -> std::array<double, 2> {
+            const double t = std::exp(big_t * (2.0 * smoothstep(u) - 1.0));
+            const double c = reflection_cos_phi_max(t, mu_o, sin_o);
+            if (c >= 1.0) return {0.0, 0.0};
+            const double t2 = t * t;
+            const double w = 2.0 * big_t * smoothstep_slope(u) * dp_scale * t2 /
+                             ((t2 + a2) * (t2 + 1.0)) * kInvPi;
+            if (!(w > 0.0)) return {0.0, 0.0};
+            const double tol = inner_tol(w);
+            const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
+                                                     : full_circle(t, tol);
+            return {r[0] * w, r[1] * w};
+        };
+        // Past T = 1.5 (mu_o below about 0.42) one panel over the band always
+        // fails; starting from its two halves (split at tau = 0) saves it.
+        const int pieces = big_t > 1.5 ? 2 : 1;
         AdaptiveOptions piece_opt = outer_opt;
-        piece_opt.abs_tol = outer_opt.abs_tol / kPieces;
-        piece_opt.rule = KronrodRule::k15;
-        // Across the clipped band the phi integral behaves like (t - t_a)^(3/2)
-        // at its start; P = p_a + len s(u) with the smoothstep s flattens both ends.
-        const double p_b = p_of_t(band.t_b), len = p_b - p_a;
-        // Four pieces of Gauss-Kronrod (7, 15): single (15, 31) panels missed
-        // the narrow tail near t_b at grazing angles (by 1.5e-9 against an
-        // estimate of 3e-11); this choice covers every default texel.
-        for (int k = 0; k < kPieces; ++k) {
-            accumulate(integrate_adaptive<2>(
-                [&](double u) -> std::array<double, 2> {
-                    const double t = t_of_p(p_a + len * smoothstep(u));
-                    const double c = reflection_cos_phi_max(t, mu_o, sin_o);
-                    if (c >= 1.0) return {0.0, 0.0};
-                    const double w = len * smoothstep_slope(u) * kInvPi;
-                    if (!(w > 0.0)) return {0.0, 0.0};
-                    const double tol = inner_tol(w);
-                    const std::array<double, 2> r = c > -1.0 ? clipped_circle(t, c, tol)
-                                                             : full_circle(t, tol);
-                    return {r[0] * w, r[1] * w};
-                },
-                static_cast<double>(k) / kPieces, static_cast<double>(k + 1) / kPieces, piece_opt));
-        }
+        piece_opt.abs_tol = outer_opt.abs_tol / pieces;
+        for (int k = 0; k < pieces; ++k)
+            accumulate(integrate_adaptive<2>(band_integrand, static_cast<double>(k) / pieces,
+                                             static_cast<double>(k + 1) / pieces, piece_opt));
     }
+    return out;
+}
+
+Estimate<1> disney_clearcoat_albedo_average(double gloss, double abs_tol) {
+    const double alpha = clearcoat_alpha(gloss);
+    const double a2 = alpha * alpha, ln_a2 = std::log(a2);
+    const double ag2 = sqr(kClearcoatGeometryAlpha);
+    auto g1 = [&](double mu) { return 2.0 * mu / (mu + std::sqrt(ag2 + (1.0 - ag2) * mu * mu)); };
+
+    // Budget: 0.5 abs_tol for the outer integral over the half vector, 0.4
+    // abs_tol for the (u, psi) integrals it accumulates; within those, 0.3 of
+    // their tolerance for each range of u and 0.2 for the psi integrals of each.
+    constexpr double kMaxTol = 1e-6;
+    auto tol_for = [&](double budget, double weight) {
+        return weight * kMaxTol > budget ? budget / weight : kMaxTol;
+    };
+
+    // K(u) = integral over psi of G1(A + B cos psi) G1(A - B cos psi), both
+    // cosines positive, A = u cos_h, B = sqrt(1 - u^2) sin_h; {value, error}.
+    auto ring = [&](double u, double cos_h, double sin_h, double tol) -> std::array<double, 2> {
+        const double a = u * cos_h, b = safe_sqrt(1.0 - u * u) * sin_h;
+        auto g = [&](double x) {
+            const double mu_o = a + b * x, mu_i = a - b * x;
+            if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
+            return g1(mu_o) * g1(mu_i);
+        };
+        if (a >= b) {  // the full circle: 2 * integral over [0, pi] (trapezoid)
+            const std::array<double, 2> r = trapezoid_half_circle<1>(
+                [&](double x) { return std::array<double, 1>{g(x)}; }, 0.5 * tol);
+            return {2.0 * r[0], 2.0 * r[1]};
+        }
+        // |cos psi| < k = a / b: 4 * integral over psi' = pi/2 - psi in
+        // [0, asin k] of g(sin psi'), even in psi'; in s = tan(psi'/2),
+        // sin psi' = 2 s / (1 + s^2), s1 = k / (1 + sqrt(1 - k^2)).
+        const double k = a / b, s1 = k / (1.0 + std::sqrt((1.0 - k) * (1.0 + k)));
+        auto h = [&](double s) {
+            const double d = 1.0 / (1.0 + s * s);
+            return 2.0 * d * g(2.0 * s * d);
+        };
+        std::array<double, 2> r = even_panel([&](double v) { return s1 * h(s1 * v); });
+        if (!(r[1] <= 0.25 * tol)) {
+            AdaptiveOptions opt;
+            opt.rule = KronrodRule::k31;
+            opt.abs_tol = 0.25 * tol;
+            const Estimate<1> e = integrate_adaptive<1>(
+                [&](double s) { return std::array<double, 1>{h(s)}; }, 0.0, s1, opt);
+            r = {e.value[0], e.error[0]};
+        }
+        return {4.0 * r[0], 4.0 * r[1]};
+    };
+
+    // I(theta_h) = integral over wo of F(u) u G1(mu_o) G1(mu_i), u = wo.h:
+    // for u < sin_h the azimuth about h is clipped (K behaves like
+    // (sin_h - u)^(3/2) there: u = sin_h (1 - (1 - v)^2) flattens it), for
+    // u > sin_h it is the full circle.
+    auto fresnel = [](double u) { return kClearcoatF0 + (1.0 - kClearcoatF0) * schlick_weight(u); };
+    auto half_vector = [&](double cos_h, double sin_h, double tol) -> std::array<double, 2> {
+        AdaptiveOptions opt;
+        opt.abs_tol = 0.3 * tol;
+        opt.controlled = 1;
+        opt.rule = KronrodRule::k31;
+        const double inner_budget = 0.2 * tol;
+        std::array<double, 2> r{};
+        auto add = [&](const Estimate<2>& e) {
+            r[0] += e.value[0];
+            r[1] += e.error[0] + e.value[1];
+        };
+        if (sin_h > 0.0) {
+            add(integrate_adaptive<2>(
+                [&](double v) -> std::array<double, 2> {
+                    const double u = sin_h * v * (2.0 - v);
+                    const double w = fresnel(u) * u * 2.0 * sin_h * (1.0 - v);
+                    if (!(w > 0.0)) return {0.0, 0.0};
+                    const std::array<double, 2> q = ring(u, cos_h, sin_h, tol_for(inner_budget, w));
+                    return {w * q[0], w * q[1]};
+                },
+                0.0, 1.0, opt));
+        }
+        add(integrate_adaptive<2>(
+            [&](double u) -> std::array<double, 2> {
+                const double w = fresnel(u) * u;
+                const std::array<double, 2> q =
+                    ring(u, cos_h, sin_h, tol_for(inner_budget, w * (1.0 - sin_h)));
+                return {w * q[0], w * q[1]};
+            },
+            sin_h, 1.0, opt));
+        return r;
+    };
+
+    // E_avg = (1/pi) integral of f mu_i mu_o dw_i dw_o; with dw_i = 4 (wo.h) dw_h
+    // and D cos(theta_h) dw_h = dP dphi_h / (2 pi) (P the GTR1 variable of
+    // disney_clearcoat_albedo):
+    //   E_avg = (1/pi) integral over P in [0, 1] of I(theta_h) / cos(theta_h),
+    // taken in P = s(q), the smoothstep: I / cos(theta_h) goes like
+    // cos(theta_h) ~ sqrt(1 - P) at P = 1, and I has odd powers of
+    // sin(theta_h) ~ sqrt(P) at P = 0. A single (15, 31) panel over q never
+    // passes: the integral starts from the two halves q < 1/2, q > 1/2.
+    AdaptiveOptions outer_opt;
+    outer_opt.abs_tol = 0.5 * abs_tol;
+    outer_opt.controlled = 1;
+    outer_opt.rule = KronrodRule::k31;
+    const double mid_budget = 0.4 * abs_tol;
+    auto integrand = [&](double q) -> std::array<double, 2> {
+        const double p = smoothstep(q);
+        const double t2 = a2 * std::expm1(-p * ln_a2) / -std::expm1((1.0 - p) * ln_a2);
+        const double cos_h = 1.0 / std::sqrt(1.0 + t2), sin_h = std::sqrt(t2) * cos_h;
+        const double w = smoothstep_slope(q) * kInvPi / cos_h;
+        if (!(w > 0.0) || !(cos_h > 0.0)) return {0.0, 0.0};
+        const std::array<double, 2> r = half_vector(cos_h, sin_h, tol_for(mid_budget, w));
+        return {w * r[0], w * r[1]};
+    };
+    constexpr int kPieces = 2;
+    outer_opt.abs_tol /= kPieces;
+    Estimate<2> e;
+    for (int k = 0; k < kPieces; ++k) {
+        const Estimate<2> part = integrate_adaptive<2>(integrand, static_cast<double>(k) / kPieces,
+                                                       static_cast<double>(k + 1) / kPieces, outer_opt);
+        for (int i = 0; i < 2; ++i) {
+            e.value[i] += part.value[i];
+            e.error[i] += part.error[i];
+        }
+        e.evaluations += part.evaluations;
+    }
+    Estimate<1> out;
+    out.value[0] = e.value[0];
+    out.error[0] = e.error[0] + e.value[1];
+    out.evaluations = e.evaluations;
     return out;
 }
 

@@ -10,6 +10,8 @@ Estimate<1> disney_diffuse_albedo(double mu_o, double roughness, double abs_tol)
 Estimate<1> disney_subsurface_albedo(double mu_o, double roughness, double abs_tol);
 Estimate<1> disney_sheen_albedo(double mu_o, double abs_tol);
 Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol);
+// E_avg directly, as one integral over the half vector and wo.
+Estimate<1> disney_clearcoat_albedo_average(double gloss, double abs_tol);
 Estimate<1> oren_nayar_albedo(double mu_o, double sigma, double abs_tol);
 Estimate<1> fujii_oren_nayar_albedo(double mu_o, double sigma, double abs_tol);
 Estimate<1> eon_albedo(double mu_o, double sigma, double abs_tol);

@@ -14,10 +14,13 @@ constexpr Tolerances kTolerances{1e-5, kLobeAbsTolerance, 1e-12};
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (7,15), split at every kink of the integrand: the phi integral in "
     "closed form where it has one (diffuse, subsurface, Oren-Nayar family), in polar "
-    "coordinates about wo for the sheen, over the GTR1 half-vector measure (Gauss-Kronrod "
-    "(15,31)) with phi clipped to the upper hemisphere for the clearcoat (doubling trapezoid "
-    "on full circles, Gauss-Kronrod (15,31) in tan(phi/2) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
-    "averages over theta_o; error per value: QUADPACK estimate";
+    "coordinates about wo for the sheen, over the GTR1 half-vector measure with phi clipped to "
+    "the upper hemisphere for the clearcoat (Gauss-Kronrod (15,31) in the GTR1 measure below "
+    "the clipped band and in ln(tan(theta_h)) across it; doubling trapezoid on full circles, "
+    "Gauss-Kronrod (15,31) in tan(phi/4) on clipped arcs); polynomial parts by exact Gauss-Legendre; "
+    "averages over theta_o, the clearcoat's directly over the half vector (GTR1 measure), "
+    "wo.h and the azimuth of wo about it (Gauss-Kronrod (15,31), trapezoid on full circles); "
+    "error per value: QUADPACK estimate";
 
 std::string mc_sampler(Lobe lobe) {
     return lobe == Lobe::disney_clearcoat ? "GTR1 half vectors (Burley 2012)"
