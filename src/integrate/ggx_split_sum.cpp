@@ -46,6 +46,10 @@ constexpr double kMaxInnerTol = 1e-6;
 // does not share the trapezoid's blind spot).
 constexpr double kMaxClippedTol = 1e-4;
 
+// The clipped band is integrated from panels of at most this many units of x
+// (each then bisected as needed).
+constexpr double kBandPanelWidth = 3.0;
+
 // The loosest tolerance of an E(mu) inside E_avg.
 constexpr double kMaxNestedTol = 1e-7;
 
@@ -104,6 +108,34 @@ struct SplitSumIntegrand {
             v = k * p * o_h * q.scale / (s * p + alpha2 * (1.0 - mu_i * mu_i));
         }
         const double fc = schlick_weight(o_h);
+        return {v - v * fc, v * fc};
+    }
+
+    // The same on a clipped arc in u = tan(phi / 2) (sign = 1) or
+    // u = tan((pi - phi) / 2) (sign = -1), times dphi / du = 2 / (1 + u^2).
+    // With q = 1 + u^2, cos(phi) = sign (1 - u^2) / q, wo.h = O / q and
+    // mu_i = M / q with O, M polynomial in u; G2 is homogeneous of degree 0
+    // in (M, q), so it is evaluated on (M, q) directly, and the one division
+    // 1 / (q den) gives both 1 / q and 1 / den: one division instead of two.
+    std::array<double, 2> at_tan_half(const Ring& r, double sign, double u) const {
+        const double s2 = u * u;
+        const double q = 1.0 + s2;
+        const double o = r.a1 * (sign * (1.0 - s2)) + r.a0 * q;  // (wo.h) q
+        const double m = r.two_cos_h * o - mu_o * q;              // mu_i q
+        if (m <= 0.0 || o <= 0.0) return {0.0, 0.0};
+        if (generic_) {
+            std::array<double, 2> y = at(r, sign * (1.0 - s2) / q);
+            const double j = 2.0 / q;
+            return {y[0] * j, y[1] * j};
+        }
+        const double e = alpha2 * ((q - m) * (q + m));  // alpha^2 (1 - mu_i^2) q^2
+        const double rr = std::sqrt(m * m + e);          // r q
+        const double p = 2.0 * m * (rr + m);             // P q^2
+        const double den = s * p + e;
+        const double inv = 1.0 / (q * den);
+        // v (2 / q) = k (p / den) (o / q) scale (2 / q), 1 / q = den inv
+        const double v = 2.0 * k * p * o * r.scale * den * (inv * inv);
+        const double fc = schlick_weight(o * den * inv);
         return {v - v * fc, v * fc};
     }
 };
@@ -173,8 +205,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         inner_opt.rule = KronrodRule::k31;
         std::array<double, 3> r{};
         auto add = [&](double sign, double s0, double s1) {
-            const Estimate<2> in = detail::integrate_arc_tan_half<2>(
-                [&](double cos_phi) { return f.at(q, cos_phi); }, sign, s0, s1, inner_opt);
+            const Estimate<2> in = integrate_adaptive<2>(
+                [&](double u) { return f.at_tan_half(q, sign, u); }, s0, s1, inner_opt);
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
@@ -266,14 +298,19 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     const double p0 = x_a, p1 = std::min(x_b, kHighX);
     if (p1 > p0) {
         // x = p0 + (p1 - p0) s(u), s(u) = 3u^2 - 2u^3: smooth at both ends.
+        // The integrand has poles a distance pi / 2 from the real x axis
+        // (those of sech^2(x) and of cos(theta_h) at t = +-i), so a long
+        // band needs panels of a few units of x whatever the tolerance:
+        // start from them instead of bisecting down to them.
         const double len = p1 - p0;
-        accumulate(integrate_adaptive<3>(
+        const int panels = static_cast<int>(std::ceil(len / kBandPanelWidth));
+        accumulate(integrate_adaptive_panels<3>(
             [&](double u) {
                 const double x = p0 + len * u * u * (3.0 - 2.0 * u);
                 const double jac = len * 6.0 * u * (1.0 - u);
                 return outer(x, true, jac, 1.0);
             },
-            0.0, 1.0, outer_opt));
+            0.0, 1.0, panels, outer_opt));
     }
     return out;
 }
