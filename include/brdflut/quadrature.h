@@ -114,15 +114,31 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
     const double h = 0.5 * (b - a);
     std::array<std::array<double, N>, K> y;
     std::array<double, K> wk, wg;
-    y[0] = f(c);
     wk[0] = R::wk[half];
     wg[0] = R::wg[half / 2];
     for (int j = 0; j < half; ++j) {
-        const double dx = h * R::x[static_cast<std::size_t>(j)];
-        y[1 + 2 * j] = f(c - dx);
-        y[2 + 2 * j] = f(c + dx);
         wk[1 + 2 * j] = wk[2 + 2 * j] = R::wk[static_cast<std::size_t>(j)];
         wg[1 + 2 * j] = wg[2 + 2 * j] = (j % 2 == 1) ? R::wg[static_cast<std::size_t>(j / 2)] : 0.0;
+    }
+    // An integrand with a member batch(const double* x, std::array<double,
+    // N>* y, int n) evaluates the K nodes in one call (to use SIMD); it must
+    // return exactly what f(x) returns at each node.
+    if constexpr (requires(const double* xs, std::array<double, N>* ys) { f.batch(xs, ys, K); }) {
+        std::array<double, K> xs;
+        xs[0] = c;
+        for (int j = 0; j < half; ++j) {
+            const double dx = h * R::x[static_cast<std::size_t>(j)];
+            xs[static_cast<std::size_t>(1 + 2 * j)] = c - dx;
+            xs[static_cast<std::size_t>(2 + 2 * j)] = c + dx;
+        }
+        f.batch(xs.data(), y.data(), K);
+    } else {
+        y[0] = f(c);
+        for (int j = 0; j < half; ++j) {
+            const double dx = h * R::x[static_cast<std::size_t>(j)];
+            y[1 + 2 * j] = f(c - dx);
+            y[2 + 2 * j] = f(c + dx);
+        }
     }
     Interval<N> r{a, b, {}, {}, 0.0};
     for (std::size_t i = 0; i < N; ++i) {

@@ -28,6 +28,10 @@
 #include <cmath>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "integrate/half_circle.h"
 #include "integrate/reflection_clip.h"
 
@@ -50,8 +54,12 @@ constexpr double kMaxClippedTol = 1e-4;
 // (each then bisected as needed).
 constexpr double kBandPanelWidth = 3.0;
 
+// The range of E_avg in ln(mu) is integrated from panels of at most this
+// width.
+constexpr double kLnMuPanelWidth = 3.0;
+
 // The loosest tolerance of an E(mu) inside E_avg.
-constexpr double kMaxNestedTol = 1e-7;
+constexpr double kMaxNestedTol = 1e-5;
 
 // G2 falls from its plateau to 0 as mu_i drops below about alpha; a clipped
 // phi range is cut where mu_i = kDipWidths alpha (see clipped_circle).
@@ -111,6 +119,43 @@ struct SplitSumIntegrand {
         return {v - v * fc, v * fc};
     }
 
+    // at at n values of cos(phi); with SSE2 two at a time, by the same
+    // operations in the same order (so bit for bit the same values).
+    void at_batch(const Ring& q, const double* cos_phi, std::array<double, 2>* y, int n) const {
+        int i = 0;
+#if defined(__SSE2__)
+        if (!generic_) {
+            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), zero = _mm_setzero_pd();
+            const __m128d a1 = _mm_set1_pd(q.a1), a0 = _mm_set1_pd(q.a0), tch = _mm_set1_pd(q.two_cos_h);
+            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
+            const __m128d kv = _mm_set1_pd(k), scale = _mm_set1_pd(q.scale);
+            for (; i + 2 <= n; i += 2) {
+                const __m128d o_h = _mm_add_pd(_mm_mul_pd(a1, _mm_loadu_pd(cos_phi + i)), a0);
+                const __m128d mu0 = _mm_sub_pd(_mm_mul_pd(tch, o_h), mo);
+                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(mu0, zero), _mm_cmpgt_pd(o_h, zero));
+                // Lanes outside the hemisphere compute on mu_i = 1 and give 0.
+                const __m128d mu = _mm_or_pd(_mm_and_pd(ok, mu0), _mm_andnot_pd(ok, one));
+                const __m128d mu2 = _mm_mul_pd(mu, mu);
+                const __m128d e = _mm_mul_pd(a2, _mm_sub_pd(one, mu2));
+                const __m128d r = _mm_sqrt_pd(_mm_add_pd(mu2, e));
+                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, mu), _mm_add_pd(r, mu));
+                const __m128d v = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(kv, p), o_h), scale),
+                                             _mm_add_pd(_mm_mul_pd(sv, p), e));
+                const __m128d m = _mm_sub_pd(one, o_h);
+                const __m128d m2 = _mm_mul_pd(m, m);
+                const __m128d vf = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(m2, m2), m)));
+                const __m128d va = _mm_and_pd(ok, _mm_sub_pd(v, vf));
+                alignas(16) double lo[2], hi[2];
+                _mm_store_pd(lo, _mm_unpacklo_pd(va, vf));
+                _mm_store_pd(hi, _mm_unpackhi_pd(va, vf));
+                y[i] = {lo[0], lo[1]};
+                y[i + 1] = {hi[0], hi[1]};
+            }
+        }
+#endif
+        for (; i < n; ++i) y[i] = at(q, cos_phi[i]);
+    }
+
     // The same on a clipped arc in u = tan(phi / 2) (sign = 1) or
     // u = tan((pi - phi) / 2) (sign = -1), times dphi / du = 2 / (1 + u^2).
     // With q = 1 + u^2, cos(phi) = sign (1 - u^2) / q, wo.h = O / q and
@@ -118,26 +163,97 @@ struct SplitSumIntegrand {
     // in (M, q), so it is evaluated on (M, q) directly, and the one division
     // 1 / (q den) gives both 1 / q and 1 / den: one division instead of two.
     std::array<double, 2> at_tan_half(const Ring& r, double sign, double u) const {
-        const double s2 = u * u;
-        const double q = 1.0 + s2;
-        const double o = r.a1 * (sign * (1.0 - s2)) + r.a0 * q;  // (wo.h) q
-        const double m = r.two_cos_h * o - mu_o * q;              // mu_i q
-        if (m <= 0.0 || o <= 0.0) return {0.0, 0.0};
         if (generic_) {
+            const double s2 = u * u, q = 1.0 + s2;
             std::array<double, 2> y = at(r, sign * (1.0 - s2) / q);
             const double j = 2.0 / q;
             return {y[0] * j, y[1] * j};
         }
+        const ArcConstants a = arc_constants(r, sign);
+        const double s2 = u * u;
+        const double q = 1.0 + s2;
+        const double o = a.a1s * (1.0 - s2) + r.a0 * q;  // (wo.h) q
+        const double m = r.two_cos_h * o - mu_o * q;     // mu_i q
+        if (!((m > 0.0) & (o > 0.0))) return {0.0, 0.0};
         const double e = alpha2 * ((q - m) * (q + m));  // alpha^2 (1 - mu_i^2) q^2
         const double rr = std::sqrt(m * m + e);          // r q
-        const double p = 2.0 * m * (rr + m);             // P q^2
+        const double p = (2.0 * m) * (rr + m);           // P q^2
         const double den = s * p + e;
         const double inv = 1.0 / (q * den);
-        // v (2 / q) = k (p / den) (o / q) scale (2 / q), 1 / q = den inv
-        const double v = 2.0 * k * p * o * r.scale * den * (inv * inv);
-        const double fc = schlick_weight(o * den * inv);
-        return {v - v * fc, v * fc};
+        // v (2 / q) = k (p / den) (o / q) scale (2 / q), with 1 / q = den inv
+        const double v = ((a.k2 * p) * o * den) * (inv * inv);
+        const double y = 1.0 - (o * den) * inv;  // 1 - wo.h
+        const double y2 = y * y;
+        const double b = v * ((y2 * y2) * y);
+        return {v - b, b};
     }
+
+    // at_tan_half at n nodes; with SSE2 two at a time, by the same
+    // operations in the same order (so bit for bit the same values).
+    void at_tan_half_batch(const Ring& r, double sign, const double* u, std::array<double, 2>* y, int n) const {
+        int i = 0;
+#if defined(__SSE2__)
+        if (!generic_) {
+            const ArcConstants a = arc_constants(r, sign);
+            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), zero = _mm_setzero_pd();
+            const __m128d a1s = _mm_set1_pd(a.a1s), a0 = _mm_set1_pd(r.a0), tch = _mm_set1_pd(r.two_cos_h);
+            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
+            const __m128d k2 = _mm_set1_pd(a.k2);
+            for (; i + 2 <= n; i += 2) {
+                const __m128d x = _mm_loadu_pd(u + i);
+                const __m128d s2 = _mm_mul_pd(x, x);
+                const __m128d q = _mm_add_pd(one, s2);
+                const __m128d o = _mm_add_pd(_mm_mul_pd(a1s, _mm_sub_pd(one, s2)), _mm_mul_pd(a0, q));
+                const __m128d m0 = _mm_sub_pd(_mm_mul_pd(tch, o), _mm_mul_pd(mo, q));
+                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(m0, zero), _mm_cmpgt_pd(o, zero));
+                // Lanes outside the arc compute on m = 1 (harmless) and give 0.
+                const __m128d m = _mm_or_pd(_mm_and_pd(ok, m0), _mm_andnot_pd(ok, one));
+                const __m128d e = _mm_mul_pd(a2, _mm_mul_pd(_mm_sub_pd(q, m), _mm_add_pd(q, m)));
+                const __m128d rr = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(m, m), e));
+                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, m), _mm_add_pd(rr, m));
+                const __m128d den = _mm_add_pd(_mm_mul_pd(sv, p), e);
+                const __m128d inv = _mm_div_pd(one, _mm_mul_pd(q, den));
+                const __m128d v = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(k2, p), o), den), _mm_mul_pd(inv, inv));
+                const __m128d w = _mm_sub_pd(one, _mm_mul_pd(_mm_mul_pd(o, den), inv));
+                const __m128d w2 = _mm_mul_pd(w, w);
+                const __m128d b = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(w2, w2), w)));
+                const __m128d av = _mm_and_pd(ok, _mm_sub_pd(v, b));
+                alignas(16) double lo[2], hi[2];
+                _mm_store_pd(lo, _mm_unpacklo_pd(av, b));  // {A_i, B_i}
+                _mm_store_pd(hi, _mm_unpackhi_pd(av, b));  // {A_i+1, B_i+1}
+                y[i] = {lo[0], lo[1]};
+                y[i + 1] = {hi[0], hi[1]};
+            }
+        }
+#endif
+        for (; i < n; ++i) y[i] = at_tan_half(r, sign, u[i]);
+    }
+
+private:
+    struct ArcConstants {
+        double a1s;  // a1 sign
+        double k2;   // 2 k scale
+    };
+    ArcConstants arc_constants(const Ring& r, double sign) const { return {r.a1 * sign, 2.0 * k * r.scale}; }
+};
+
+// The integrand of a full circle in cos(phi), as the trapezoid takes it: one
+// node at a time or many at once.
+struct CircleIntegrand {
+    const SplitSumIntegrand& f;
+    const SplitSumIntegrand::Ring& ring;
+    std::array<double, 2> operator()(double cos_phi) const { return f.at(ring, cos_phi); }
+    void batch(const double* c, std::array<double, 2>* y, int n) const { f.at_batch(ring, c, y, n); }
+};
+
+// The integrand of a clipped arc in tan(phi / 2), as the Kronrod panels take
+// it: one node at a time or all of a panel's nodes at once.
+struct ArcIntegrand {
+    const SplitSumIntegrand& f;
+    const SplitSumIntegrand::Ring& ring;
+    double sign;
+    std::array<double, 2> operator()(double u) const { return f.at_tan_half(ring, sign, u); }
+    void batch(const double* u, std::array<double, 2>* y, int n) const { f.at_tan_half_batch(ring, sign, u, y, n); }
 };
 
 
@@ -189,7 +305,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // sums agree.
     auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        return detail::trapezoid_half_circle<2>([&](double cos_phi) { return f.at(q, cos_phi); }, tol);
+        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol);
     };
 
     // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
@@ -205,8 +321,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         inner_opt.rule = KronrodRule::k31;
         std::array<double, 3> r{};
         auto add = [&](double sign, double s0, double s1) {
-            const Estimate<2> in = integrate_adaptive<2>(
-                [&](double u) { return f.at_tan_half(q, sign, u); }, s0, s1, inner_opt);
+            const Estimate<2> in = integrate_adaptive<2>(ArcIntegrand{f, q, sign}, s0, s1, inner_opt);
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
@@ -350,13 +465,17 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
     accumulate(integrate_adaptive<2>(
         [&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0, 1.0, opt));
     if (b < 1.0) {
+        // Started from panels of at most kLnMuPanelWidth in ln(mu): E(mu)
+        // has complex singularities about pi/2 off the real ln(mu) axis
+        // (near mu ~ alpha), so a long range is bisected down to about that
+        // anyway.
         span = -std::log(b);
-        accumulate(integrate_adaptive<2>(
+        accumulate(integrate_adaptive_panels<2>(
             [&](double v) {
                 const double mu = std::exp(v);
                 return integrand(mu, mu);
             },
-            std::log(b), 0.0, opt));
+            std::log(b), 0.0, static_cast<int>(std::ceil(span / kLnMuPanelWidth)), opt));
     }
     return out;
 }
