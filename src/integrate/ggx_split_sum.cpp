@@ -389,6 +389,13 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         const double e2 = std::exp(2.0 * x_split);
         const double xi_end = e2 / (1.0 + e2);
         const double tol = inner_tol(kInvPi, xi_end);
+        // When the whole of xi in [0, 1/2] is a full circle (x_a > 0), the
+        // integrand is analytic there with its nearest singularity at
+        // xi = 1 (t -> infinity; it depends on t^2 only), so the (7, 15)
+        // Kronrod panel suffices; otherwise the range ends at t_a, where
+        // G2's dip appears, and needs the (15, 31) rule.
+        AdaptiveOptions xi_opt = outer_opt;
+        if (x_a > 0.0) xi_opt.rule = KronrodRule::k15;
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));
@@ -396,7 +403,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
                 for (double& v : r) v *= kInvPi;
                 return r;
             },
-            0.0, xi_end, outer_opt));
+            0.0, xi_end, xi_opt));
     }
     if (x_a > x_split) {
         // Towards x_a the phi integrand develops the dip of G2 at phi = pi, so
