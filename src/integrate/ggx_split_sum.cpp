@@ -47,7 +47,11 @@ constexpr double kHighX = 36.0;
 // reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
 constexpr double kMaxInnerTol = 1e-6;
 // The same for a clipped phi range (adaptive Kronrod panels, whose estimate
-// does not share the trapezoid's blind spot).
+// does not share the trapezoid's blind spot), relative to the size of its
+// integrand, 1 / (mu_o cos(theta_h)): far out in the tail at grazing view
+// that is up to 1e15, and an absolute cap would ask for less than double
+// rounding can resolve (every panel split to the work limit, for a value
+// whose weight is below 1e-20).
 constexpr double kMaxClippedTol = 1e-4;
 
 // The clipped band is integrated from panels of at most this many units of x
@@ -389,7 +393,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             if (c >= 1.0) return {0.0, 0.0, 0.0};
         }
         const double w = weight(x) * jac;
-        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol))
+        const double size = std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
+        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol * size))
                                            : full_circle(t, inner_tol(w, span));
         for (double& v : r) v *= w;
         return r;
