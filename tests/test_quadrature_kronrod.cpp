@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "brdflut/quadrature.h"
+#include "integrate/half_circle.h"
 
 using namespace brdflut;
 
@@ -46,4 +47,100 @@ TEST(KronrodRule, DefaultRuleIsStillQK15) {
         [](double x) { return std::array<double, 1>{std::exp(x)}; }, 0.0, 1.0);
     EXPECT_EQ(e.evaluations, 15);
     EXPECT_NEAR(e.value[0], std::exp(1.0) - 1.0, 1e-14);
+}
+
+TEST(AdaptivePanels, OnePanelIsIntegrateAdaptiveBitForBit) {
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-12;
+    opt.rule = KronrodRule::k31;
+    auto f = [](double x) { return std::array<double, 2>{1.0 / (1e-4 + x * x), std::cos(30.0 * x)}; };
+    const Estimate<2> a = integrate_adaptive<2>(f, -1.0, 2.0, opt);
+    const Estimate<2> b = integrate_adaptive_panels<2>(f, -1.0, 2.0, 1, opt);
+    EXPECT_GT(a.evaluations, 31);  // bisected, not the single-panel shortcut
+    EXPECT_EQ(a.value, b.value);
+    EXPECT_EQ(a.error, b.error);
+    EXPECT_EQ(a.evaluations, b.evaluations);
+    // A panel that meets the tolerance at once is returned as it is.
+    auto smooth = [](double x) { return std::array<double, 1>{std::exp(x)}; };
+    const Estimate<1> one = integrate_adaptive<1>(smooth, 0.0, 1.0, opt);
+    const detail::Interval<1> panel = detail::kronrod_panel<1>(smooth, 0.0, 1.0, opt.controlled, opt.rule);
+    EXPECT_EQ(one.evaluations, 31);
+    EXPECT_EQ(one.value[0], panel.value[0]);
+    EXPECT_EQ(one.error[0], panel.error[0]);
+}
+
+TEST(AdaptivePanels, StartingPanelsOnALongRangeSkipTheCoarseOnesAndStayHonest) {
+    // Lorentzians of width 0.5 every 2 units over [0, 24]: one panel cannot
+    // resolve them, so bisection evaluates every coarser panel on its way down.
+    auto f = [](double x) {
+        double s = 0.0;
+        for (int k = 0; k <= 12; ++k) s += 0.25 / ((x - 2.0 * k) * (x - 2.0 * k) + 0.25);
+        return std::array<double, 1>{s};
+    };
+    double exact = 0.0;
+    for (int k = 0; k <= 12; ++k) exact += 0.5 * (std::atan((24.0 - 2.0 * k) / 0.5) + std::atan(2.0 * k / 0.5));
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-10;
+    opt.rule = KronrodRule::k31;
+    const Estimate<1> one = integrate_adaptive_panels<1>(f, 0.0, 24.0, 1, opt);
+    const Estimate<1> eight = integrate_adaptive_panels<1>(f, 0.0, 24.0, 8, opt);
+    EXPECT_NEAR(one.value[0], exact, one.error[0]);
+    EXPECT_NEAR(eight.value[0], exact, eight.error[0]);
+    EXPECT_LE(eight.error[0], 1e-10);
+    EXPECT_LT(eight.evaluations, one.evaluations);
+    EXPECT_EQ(eight.evaluations % 31, 0);
+}
+
+namespace {
+// f(x) = 1 / (1 + x^2), evaluated one node at a time or in batches; counts
+// the batches and the nodes they carried.
+struct Batched {
+    int* batches;
+    int* nodes;
+    std::array<double, 1> operator()(double x) const { return {1.0 / (1.0 + x * x)}; }
+    void batch(const double* x, std::array<double, 1>* y, int n) const {
+        ++*batches;
+        *nodes += n;
+        for (int i = 0; i < n; ++i) y[i] = (*this)(x[i]);
+    }
+};
+}  // namespace
+
+TEST(KronrodRule, ABatchIntegrandGetsEveryNodeOfAPanelAndTheSameResult) {
+    for (KronrodRule rule : {KronrodRule::k15, KronrodRule::k31}) {
+        AdaptiveOptions opt;
+        opt.abs_tol = 1e-13;
+        opt.rule = rule;
+        int batches = 0, nodes = 0;
+        const Estimate<1> b = integrate_adaptive<1>(Batched{&batches, &nodes}, -3.0, 5.0, opt);
+        const Estimate<1> s = integrate_adaptive<1>([](double x) { return std::array<double, 1>{1.0 / (1.0 + x * x)}; },
+                                                    -3.0, 5.0, opt);
+        EXPECT_EQ(b.value, s.value);
+        EXPECT_EQ(b.error, s.error);
+        EXPECT_EQ(b.evaluations, s.evaluations);
+        const int per_panel = rule == KronrodRule::k31 ? 31 : 15;
+        EXPECT_EQ(nodes, b.evaluations);
+        EXPECT_EQ(batches * per_panel, nodes);
+        EXPECT_NEAR(b.value[0], std::atan(5.0) + std::atan(3.0), b.error[0]);
+    }
+}
+
+TEST(HalfCircleTrapezoid, ABatchIntegrandGetsTheSameResult) {
+    // integral over [0, pi] of dphi / (1.5 + cos(phi)) = pi / sqrt(1.25).
+    int batches = 0, nodes = 0;
+    struct Shifted : Batched {
+        std::array<double, 1> operator()(double c) const { return {1.0 / (1.5 + c)}; }
+        void batch(const double* c, std::array<double, 1>* y, int n) const {
+            ++*batches;
+            *nodes += n;
+            for (int i = 0; i < n; ++i) y[i] = (*this)(c[i]);
+        }
+    };
+    const std::array<double, 2> b = detail::trapezoid_half_circle<1>(Shifted{{&batches, &nodes}}, 1e-13);
+    const std::array<double, 2> s = detail::trapezoid_half_circle<1>(
+        [](double c) { return std::array<double, 1>{1.0 / (1.5 + c)}; }, 1e-13);
+    EXPECT_EQ(b, s);
+    EXPECT_GT(batches, 0);
+    EXPECT_GE(nodes, 16);
+    EXPECT_NEAR(b[0], kPi / std::sqrt(1.25), 1e-12);
 }

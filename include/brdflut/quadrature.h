@@ -114,15 +114,31 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
     const double h = 0.5 * (b - a);
     std::array<std::array<double, N>, K> y;
     std::array<double, K> wk, wg;
-    y[0] = f(c);
     wk[0] = R::wk[half];
     wg[0] = R::wg[half / 2];
     for (int j = 0; j < half; ++j) {
-        const double dx = h * R::x[static_cast<std::size_t>(j)];
-        y[1 + 2 * j] = f(c - dx);
-        y[2 + 2 * j] = f(c + dx);
         wk[1 + 2 * j] = wk[2 + 2 * j] = R::wk[static_cast<std::size_t>(j)];
         wg[1 + 2 * j] = wg[2 + 2 * j] = (j % 2 == 1) ? R::wg[static_cast<std::size_t>(j / 2)] : 0.0;
+    }
+    // An integrand with a member batch(const double* x, std::array<double,
+    // N>* y, int n) evaluates the K nodes in one call (to use SIMD); it must
+    // return exactly what f(x) returns at each node.
+    if constexpr (requires(const double* xs, std::array<double, N>* ys) { f.batch(xs, ys, K); }) {
+        std::array<double, K> xs;
+        xs[0] = c;
+        for (int j = 0; j < half; ++j) {
+            const double dx = h * R::x[static_cast<std::size_t>(j)];
+            xs[static_cast<std::size_t>(1 + 2 * j)] = c - dx;
+            xs[static_cast<std::size_t>(2 + 2 * j)] = c + dx;
+        }
+        f.batch(xs.data(), y.data(), K);
+    } else {
+        y[0] = f(c);
+        for (int j = 0; j < half; ++j) {
+            const double dx = h * R::x[static_cast<std::size_t>(j)];
+            y[1 + 2 * j] = f(c - dx);
+            y[2 + 2 * j] = f(c + dx);
+        }
     }
     Interval<N> r{a, b, {}, {}, 0.0};
     for (std::size_t i = 0; i < N; ++i) {
@@ -166,21 +182,15 @@ struct AdaptiveOptions {
     KronrodRule rule = KronrodRule::k15;  // the panel rule
 };
 
-// Integrates f over [a, b]; f maps a double to std::array<double, N>.
-// Globally adaptive: the interval with the largest error is bisected until
-// the summed error of every channel is below abs_tol.
+namespace detail {
+// The bisection loop of integrate_adaptive, from the intervals in `heap`
+// (out.evaluations counts those already evaluated).
 template <std::size_t N, class F>
-Estimate<N> integrate_adaptive(F&& f, double a, double b, const AdaptiveOptions& opt = {}) {
-    Estimate<N> out;
-    if (!(b > a)) return out;
-    std::vector<detail::Interval<N>> heap;
-    heap.reserve(static_cast<std::size_t>(opt.max_intervals) + 1);
-    auto less = [](const detail::Interval<N>& p, const detail::Interval<N>& q) {
-        return p.worst < q.worst;
-    };
+Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOptions& opt, Estimate<N> out) {
+    heap.reserve(std::max(heap.size(), static_cast<std::size_t>(opt.max_intervals)) + 1);
+    auto less = [](const Interval<N>& p, const Interval<N>& q) { return p.worst < q.worst; };
+    std::make_heap(heap.begin(), heap.end(), less);
     const int per_panel = opt.rule == KronrodRule::k31 ? 31 : 15;
-    heap.push_back(detail::kronrod_panel<N>(f, a, b, opt.controlled, opt.rule));
-    out.evaluations = per_panel;
     auto total_error_ok = [&]() {
         std::array<double, N> e{};
         for (const auto& iv : heap)
@@ -191,7 +201,7 @@ Estimate<N> integrate_adaptive(F&& f, double a, double b, const AdaptiveOptions&
     };
     while (static_cast<int>(heap.size()) < opt.max_intervals && !total_error_ok()) {
         std::pop_heap(heap.begin(), heap.end(), less);
-        const detail::Interval<N> worst = heap.back();
+        const Interval<N> worst = heap.back();
         heap.pop_back();
         const double m = 0.5 * (worst.a + worst.b);
         if (!(m > worst.a && m < worst.b)) {  // cannot split further
@@ -199,22 +209,72 @@ Estimate<N> integrate_adaptive(F&& f, double a, double b, const AdaptiveOptions&
             std::push_heap(heap.begin(), heap.end(), less);
             break;
         }
-        heap.push_back(detail::kronrod_panel<N>(f, worst.a, m, opt.controlled, opt.rule));
+        heap.push_back(kronrod_panel<N>(f, worst.a, m, opt.controlled, opt.rule));
         std::push_heap(heap.begin(), heap.end(), less);
-        heap.push_back(detail::kronrod_panel<N>(f, m, worst.b, opt.controlled, opt.rule));
+        heap.push_back(kronrod_panel<N>(f, m, worst.b, opt.controlled, opt.rule));
         std::push_heap(heap.begin(), heap.end(), less);
         out.evaluations += 2 * per_panel;
     }
     // Sum in a fixed order (by position) so the result does not depend on
     // the heap's internal arrangement beyond the set of intervals.
-    std::sort(heap.begin(), heap.end(),
-              [](const auto& p, const auto& q) { return p.a < q.a; });
+    std::sort(heap.begin(), heap.end(), [](const auto& p, const auto& q) { return p.a < q.a; });
     for (const auto& iv : heap)
         for (std::size_t i = 0; i < N; ++i) {
             out.value[i] += iv.value[i];
             out.error[i] += iv.error[i];
         }
     return out;
+}
+}  // namespace detail
+
+// Integrates f over [a, b]; f maps a double to std::array<double, N>.
+// Globally adaptive: the interval with the largest error is bisected until
+// the summed error of every channel is below abs_tol. The same, starting
+// from `panels` equal panels of [a, b] instead of one (QUADPACK's QAGP with
+// equally spaced break points): when the integrand is known to need several
+// panels (a long range over which it varies on a shorter scale), this saves
+// the evaluations of the coarse panels that bisection would discard.
+// panels = 1 is integrate_adaptive.
+template <std::size_t N, class F>
+Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
+                                      const AdaptiveOptions& opt = {}) {
+    Estimate<N> out;
+    if (!(b > a)) return out;
+    panels = std::max(panels, 1);
+    const int per_panel = opt.rule == KronrodRule::k31 ? 31 : 15;
+    out.evaluations = per_panel * panels;
+    auto within_tolerance = [&](const std::array<double, N>& e) {
+        for (std::size_t i = 0; i < N && i < opt.controlled; ++i)
+            if (e[i] > opt.abs_tol) return false;
+        return true;
+    };
+    if (panels == 1) {
+        // One panel that meets the tolerance (or no room to bisect) is the
+        // answer: no work list needed (this is the common case of an inner
+        // integral, called once per outer node).
+        const detail::Interval<N> first = detail::kronrod_panel<N>(f, a, b, opt.controlled, opt.rule);
+        if (opt.max_intervals <= 1 || within_tolerance(first.error)) {
+            for (std::size_t i = 0; i < N; ++i) {  // as the summation below
+                out.value[i] += first.value[i];
+                out.error[i] += first.error[i];
+            }
+            return out;
+        }
+        return detail::adaptive_from<N>(f, std::vector<detail::Interval<N>>{first}, opt, out);
+    }
+    std::vector<detail::Interval<N>> heap;
+    heap.reserve(static_cast<std::size_t>(std::max(opt.max_intervals, panels)) + 1);
+    for (int k = 0; k < panels; ++k) {
+        const double lo = k == 0 ? a : a + (b - a) * k / panels;
+        const double hi = k + 1 == panels ? b : a + (b - a) * (k + 1) / panels;
+        heap.push_back(detail::kronrod_panel<N>(f, lo, hi, opt.controlled, opt.rule));
+    }
+    return detail::adaptive_from<N>(f, std::move(heap), opt, out);
+}
+
+template <std::size_t N, class F>
+Estimate<N> integrate_adaptive(F&& f, double a, double b, const AdaptiveOptions& opt = {}) {
+    return integrate_adaptive_panels<N>(f, a, b, 1, opt);
 }
 
 // Fixed-order Gauss-Legendre over [a, b] for a vector-valued integrand.

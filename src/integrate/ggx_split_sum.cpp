@@ -28,6 +28,10 @@
 #include <cmath>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "integrate/half_circle.h"
 #include "integrate/reflection_clip.h"
 
@@ -43,18 +47,31 @@ constexpr double kHighX = 36.0;
 // reflected direction grazes the horizon (width ~ sqrt(alpha / mu_o) in phi).
 constexpr double kMaxInnerTol = 1e-6;
 // The same for a clipped phi range (adaptive Kronrod panels, whose estimate
-// does not share the trapezoid's blind spot).
+// does not share the trapezoid's blind spot), relative to the size of its
+// integrand, 1 / (mu_o cos(theta_h)): far out in the tail at grazing view
+// that is up to 1e15, and an absolute cap would ask for less than double
+// rounding can resolve (every panel split to the work limit, for a value
+// whose weight is below 1e-20).
 constexpr double kMaxClippedTol = 1e-4;
 
+// The clipped band is integrated from panels of at most this many units of x
+// (each then bisected as needed).
+constexpr double kBandPanelWidth = 3.0;
+
+// The range of E_avg in ln(mu) is integrated from panels of at most this
+// width.
+constexpr double kLnMuPanelWidth = 3.0;
+
 // The loosest tolerance of an E(mu) inside E_avg.
-constexpr double kMaxNestedTol = 1e-7;
+constexpr double kMaxNestedTol = 1e-5;
 
 // G2 falls from its plateau to 0 as mu_i drops below about alpha; a clipped
 // phi range is cut where mu_i = kDipWidths alpha (see clipped_circle).
 constexpr double kDipWidths = 8.0;
 
-// A clipped phi range is integrated in one piece of s = tan(phi / 2) up to
-// s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos.
+// A clipped phi range is integrated in s = tan(phi / 2) up to
+// s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos, and beyond in
+// tan(phi / 4).
 constexpr double kMaxTanHalf = 4.0;
 constexpr double kSplitCos = (1.0 - kMaxTanHalf * kMaxTanHalf) / (1.0 + kMaxTanHalf * kMaxTanHalf);
 
@@ -106,6 +123,165 @@ struct SplitSumIntegrand {
         const double fc = schlick_weight(o_h);
         return {v - v * fc, v * fc};
     }
+
+    // at at n values of cos(phi); with SSE2 two at a time, by the same
+    // operations in the same order (so bit for bit the same values).
+    void at_batch(const Ring& q, const double* cos_phi, std::array<double, 2>* y, int n) const {
+        int i = 0;
+#if defined(__SSE2__)
+        if (!generic_) {
+            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), zero = _mm_setzero_pd();
+            const __m128d a1 = _mm_set1_pd(q.a1), a0 = _mm_set1_pd(q.a0), tch = _mm_set1_pd(q.two_cos_h);
+            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
+            const __m128d kv = _mm_set1_pd(k), scale = _mm_set1_pd(q.scale);
+            for (; i + 2 <= n; i += 2) {
+                const __m128d o_h = _mm_add_pd(_mm_mul_pd(a1, _mm_loadu_pd(cos_phi + i)), a0);
+                const __m128d mu0 = _mm_sub_pd(_mm_mul_pd(tch, o_h), mo);
+                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(mu0, zero), _mm_cmpgt_pd(o_h, zero));
+                // Lanes outside the hemisphere compute on mu_i = 1 and give 0.
+                const __m128d mu = _mm_or_pd(_mm_and_pd(ok, mu0), _mm_andnot_pd(ok, one));
+                const __m128d mu2 = _mm_mul_pd(mu, mu);
+                const __m128d e = _mm_mul_pd(a2, _mm_sub_pd(one, mu2));
+                const __m128d r = _mm_sqrt_pd(_mm_add_pd(mu2, e));
+                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, mu), _mm_add_pd(r, mu));
+                const __m128d v = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(kv, p), o_h), scale),
+                                             _mm_add_pd(_mm_mul_pd(sv, p), e));
+                const __m128d m = _mm_sub_pd(one, o_h);
+                const __m128d m2 = _mm_mul_pd(m, m);
+                const __m128d vf = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(m2, m2), m)));
+                const __m128d va = _mm_and_pd(ok, _mm_sub_pd(v, vf));
+                alignas(16) double lo[2], hi[2];
+                _mm_store_pd(lo, _mm_unpacklo_pd(va, vf));
+                _mm_store_pd(hi, _mm_unpackhi_pd(va, vf));
+                y[i] = {lo[0], lo[1]};
+                y[i + 1] = {hi[0], hi[1]};
+            }
+        }
+#endif
+        for (; i < n; ++i) y[i] = at(q, cos_phi[i]);
+    }
+
+    // The same on a clipped arc in u = tan(phi / 2) (Arc::half, sign = 1),
+    // u = tan((pi - phi) / 2) (Arc::half, sign = -1) or u = tan(phi / 4)
+    // (Arc::quarter), times dphi / du. With q = 1 + u^2 and
+    //   half:    cos(phi) = sign (1 - u^2) / q,            dphi/du = 2 / q,
+    //   quarter: cos(phi) = (1 - 6 u^2 + u^4) / q^2,       dphi/du = 4 q / q^2,
+    // write cos(phi) = C / D (D = q, or q^2); then wo.h = O / D and
+    // mu_i = M / D with O, M polynomial in u. G2 is homogeneous of degree 0
+    // in (M, D), so it is evaluated on (M, D) directly, and the one division
+    // 1 / (D den) gives both 1 / D and 1 / den.
+    enum class Arc { half, quarter };
+    template <Arc kind>
+    std::array<double, 2> at_arc(const Ring& r, double sign, double u) const {
+        const double s2 = u * u;
+        const double q = 1.0 + s2;
+        const double d = kind == Arc::half ? q : q * q;
+        const double cn = kind == Arc::half ? 1.0 - s2 : (1.0 - 6.0 * s2) + s2 * s2;
+        if (generic_) {
+            std::array<double, 2> y = at(r, sign * cn / d);
+            const double j = kind == Arc::half ? 2.0 / q : 4.0 / q;
+            return {y[0] * j, y[1] * j};
+        }
+        const ArcConstants a = arc_constants<kind>(r, sign);
+        const double o = a.a1s * cn + r.a0 * d;       // (wo.h) D
+        const double m = r.two_cos_h * o - mu_o * d;  // mu_i D
+        if (!((m > 0.0) & (o > 0.0))) return {0.0, 0.0};
+        const double e = alpha2 * ((d - m) * (d + m));  // alpha^2 (1 - mu_i^2) D^2
+        const double rr = std::sqrt(m * m + e);          // r D
+        const double p = (2.0 * m) * (rr + m);           // P D^2
+        const double den = s * p + e;
+        const double inv = 1.0 / (d * den);
+        // k (p / den) (o / D) scale dphi/du, with 1 / D = den inv and
+        // dphi/du = 2 / D (half) or 4 q / D (quarter)
+        double v = ((a.kj * p) * o * den) * (inv * inv);
+        if constexpr (kind == Arc::quarter) v *= q;
+        const double y = 1.0 - (o * den) * inv;  // 1 - wo.h
+        const double y2 = y * y;
+        const double b = v * ((y2 * y2) * y);
+        return {v - b, b};
+    }
+
+    // at_arc at n nodes; with SSE2 two at a time, by the same operations in
+    // the same order (so bit for bit the same values).
+    template <Arc kind>
+    void at_arc_batch(const Ring& r, double sign, const double* u, std::array<double, 2>* y, int n) const {
+        int i = 0;
+#if defined(__SSE2__)
+        if (!generic_) {
+            const ArcConstants a = arc_constants<kind>(r, sign);
+            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), six = _mm_set1_pd(6.0);
+            const __m128d zero = _mm_setzero_pd();
+            const __m128d a1s = _mm_set1_pd(a.a1s), a0 = _mm_set1_pd(r.a0), tch = _mm_set1_pd(r.two_cos_h);
+            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
+            const __m128d kj = _mm_set1_pd(a.kj);
+            for (; i + 2 <= n; i += 2) {
+                const __m128d x = _mm_loadu_pd(u + i);
+                const __m128d s2 = _mm_mul_pd(x, x);
+                const __m128d q = _mm_add_pd(one, s2);
+                __m128d d, cn;
+                if constexpr (kind == Arc::half) {
+                    d = q;
+                    cn = _mm_sub_pd(one, s2);
+                } else {
+                    d = _mm_mul_pd(q, q);
+                    cn = _mm_add_pd(_mm_sub_pd(one, _mm_mul_pd(six, s2)), _mm_mul_pd(s2, s2));
+                }
+                const __m128d o = _mm_add_pd(_mm_mul_pd(a1s, cn), _mm_mul_pd(a0, d));
+                const __m128d m0 = _mm_sub_pd(_mm_mul_pd(tch, o), _mm_mul_pd(mo, d));
+                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(m0, zero), _mm_cmpgt_pd(o, zero));
+                // Lanes outside the arc compute on m = 1 (harmless) and give 0.
+                const __m128d m = _mm_or_pd(_mm_and_pd(ok, m0), _mm_andnot_pd(ok, one));
+                const __m128d e = _mm_mul_pd(a2, _mm_mul_pd(_mm_sub_pd(d, m), _mm_add_pd(d, m)));
+                const __m128d rr = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(m, m), e));
+                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, m), _mm_add_pd(rr, m));
+                const __m128d den = _mm_add_pd(_mm_mul_pd(sv, p), e);
+                const __m128d inv = _mm_div_pd(one, _mm_mul_pd(d, den));
+                __m128d v = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(kj, p), o), den), _mm_mul_pd(inv, inv));
+                if constexpr (kind == Arc::quarter) v = _mm_mul_pd(v, q);
+                const __m128d w = _mm_sub_pd(one, _mm_mul_pd(_mm_mul_pd(o, den), inv));
+                const __m128d w2 = _mm_mul_pd(w, w);
+                const __m128d b = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(w2, w2), w)));
+                const __m128d av = _mm_and_pd(ok, _mm_sub_pd(v, b));
+                alignas(16) double lo[2], hi[2];
+                _mm_store_pd(lo, _mm_unpacklo_pd(av, b));  // {A_i, B_i}
+                _mm_store_pd(hi, _mm_unpackhi_pd(av, b));  // {A_i+1, B_i+1}
+                y[i] = {lo[0], lo[1]};
+                y[i + 1] = {hi[0], hi[1]};
+            }
+        }
+#endif
+        for (; i < n; ++i) y[i] = at_arc<kind>(r, sign, u[i]);
+    }
+
+private:
+    struct ArcConstants {
+        double a1s;  // a1 sign
+        double kj;   // k scale times 2 (half) or 4 (quarter)
+    };
+    template <Arc kind>
+    ArcConstants arc_constants(const Ring& r, double sign) const {
+        return {r.a1 * sign, (kind == Arc::half ? 2.0 : 4.0) * k * r.scale};
+    }
+};
+
+// The integrand of a full circle in cos(phi), as the trapezoid takes it: one
+// node at a time or many at once.
+struct CircleIntegrand {
+    const SplitSumIntegrand& f;
+    const SplitSumIntegrand::Ring& ring;
+    std::array<double, 2> operator()(double cos_phi) const { return f.at(ring, cos_phi); }
+    void batch(const double* c, std::array<double, 2>* y, int n) const { f.at_batch(ring, c, y, n); }
+};
+
+// The integrand of a clipped arc in tan(phi / 2), as the Kronrod panels take
+// it: one node at a time or all of a panel's nodes at once.
+template <SplitSumIntegrand::Arc kind>
+struct ArcIntegrand {
+    const SplitSumIntegrand& f;
+    const SplitSumIntegrand::Ring& ring;
+    double sign;
+    std::array<double, 2> operator()(double u) const { return f.at_arc<kind>(ring, sign, u); }
+    void batch(const double* u, std::array<double, 2>* y, int n) const { f.at_arc_batch<kind>(ring, sign, u, y, n); }
 };
 
 
@@ -157,54 +333,54 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // sums agree.
     auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        return detail::trapezoid_half_circle<2>([&](double cos_phi) { return f.at(q, cos_phi); }, tol);
+        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol);
     };
 
     // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
     // fixed t: {A, B, error estimate}. In s = tan(phi / 2) the integrand is
     // rational in s (cos(phi) = (1 - s^2) / (1 + s^2), dphi = 2 ds / (1 + s^2)),
-    // so no trigonometric function is evaluated. When phi_max is close to pi
-    // (s large) the range is split at pi / 2 and the far part is done in
-    // pi - phi, so that s stays within [0, 1];
-    // tan(phi_max / 2) = sqrt((1 - c) / (1 + c)).
+    // so no trigonometric function is evaluated; tan(phi_max / 2) =
+    // sqrt((1 - c) / (1 + c)). When phi_max is close to pi (s large) the
+    // range is done in u = tan(phi / 4) <= 1 instead, which is rational too,
+    // in one piece.
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 3> {
+        using Arc = SplitSumIntegrand::Arc;
         const SplitSumIntegrand::Ring q = f.ring(t);
         AdaptiveOptions inner_opt;
         inner_opt.rule = KronrodRule::k31;
         std::array<double, 3> r{};
-        auto add = [&](double sign, double s0, double s1) {
-            const Estimate<2> in = detail::integrate_arc_tan_half<2>(
-                [&](double cos_phi) { return f.at(q, cos_phi); }, sign, s0, s1, inner_opt);
+        auto add = [&](auto integrand, double s0, double s1) {
+            const Estimate<2> in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
         };
-        // Ranges of cos(phi) in [c, 1], split at 0 when phi_max is close to
-        // pi, and where mu_i = kDipWidths alpha when the dip of G2 (mu_i below
-        // about alpha, next to phi_max) is narrow against the range: the
-        // panels then find it at once instead of by repeated bisection.
-        std::array<double, 4> cuts{c, 1.0, 1.0, 1.0};
-        int n = 1;
-        auto cut = [&](double v) {
-            int k = n;
-            while (k > 0 && cuts[static_cast<std::size_t>(k - 1)] > v) {
-                cuts[static_cast<std::size_t>(k)] = cuts[static_cast<std::size_t>(k - 1)];
-                --k;
-            }
-            cuts[static_cast<std::size_t>(k)] = v;
-            cuts[static_cast<std::size_t>(++n)] = 1.0;
-        };
-        if (c < kSplitCos) cut(0.0);
+        const bool near_pi = c < kSplitCos;
+        // Where mu_i = kDipWidths alpha, when the dip of G2 (mu_i below about
+        // alpha, next to phi_max) is narrow against the range, the range is
+        // cut: the panels then find the dip at once instead of by repeated
+        // bisection. That piece, cos(phi) in [c, c + dip], is done in
+        // tan(phi / 2), or near pi in tan((pi - phi) / 2) <= 1 (there
+        // c + dip < 0).
         const double dip = kDipWidths * alpha / (q.two_cos_h * q.a1);  // in cos(phi)
-        if (dip < 0.25 * (1.0 - c)) cut(c + dip);
-        inner_opt.abs_tol = tol / n;
-        for (int k = 0; k < n; ++k) {
-            const double lo = cuts[static_cast<std::size_t>(k)], hi = cuts[static_cast<std::size_t>(k + 1)];
-            if (lo >= kSplitCos)  // phi in [acos(hi), acos(lo)], s = tan(phi / 2) <= kMaxTanHalf
-                add(1.0, std::sqrt((1.0 - hi) / (1.0 + hi)), std::sqrt((1.0 - lo) / (1.0 + lo)));
-            else  // hi <= 0: in pi - phi, s = tan((pi - phi) / 2) <= 1
-                add(-1.0, std::sqrt((1.0 + lo) / (1.0 - lo)), std::sqrt((1.0 + hi) / (1.0 - hi)));
+        const bool cut = dip < 0.25 * (1.0 - c);
+        inner_opt.abs_tol = cut ? tol / 2 : tol;
+        double lo = c;
+        if (cut) {
+            lo = c + dip;
+            if (near_pi)
+                add(ArcIntegrand<Arc::half>{f, q, -1.0}, std::sqrt((1.0 + c) / (1.0 - c)),
+                    std::sqrt((1.0 + lo) / (1.0 - lo)));
+            else
+                add(ArcIntegrand<Arc::half>{f, q, 1.0}, std::sqrt((1.0 - lo) / (1.0 + lo)),
+                    std::sqrt((1.0 - c) / (1.0 + c)));
         }
+        // phi in [0, acos(lo)]; tan(phi / 4) = sin(phi / 2) / (1 + cos(phi / 2)).
+        if (near_pi)
+            add(ArcIntegrand<Arc::quarter>{f, q, 1.0}, 0.0,
+                std::sqrt(0.5 * (1.0 - lo)) / (1.0 + std::sqrt(0.5 * (1.0 + lo))));
+        else
+            add(ArcIntegrand<Arc::half>{f, q, 1.0}, 0.0, std::sqrt((1.0 - lo) / (1.0 + lo)));
         return r;
     };
 
@@ -217,7 +393,8 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             if (c >= 1.0) return {0.0, 0.0, 0.0};
         }
         const double w = weight(x) * jac;
-        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol))
+        const double size = std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
+        std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol * size))
                                            : full_circle(t, inner_tol(w, span));
         for (double& v : r) v *= w;
         return r;
@@ -242,6 +419,13 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         const double e2 = std::exp(2.0 * x_split);
         const double xi_end = e2 / (1.0 + e2);
         const double tol = inner_tol(kInvPi, xi_end);
+        // When the whole of xi in [0, 1/2] is a full circle (x_a > 0), the
+        // integrand is analytic there with its nearest singularity at
+        // xi = 1 (t -> infinity; it depends on t^2 only), so the (7, 15)
+        // Kronrod panel suffices; otherwise the range ends at t_a, where
+        // G2's dip appears, and needs the (15, 31) rule.
+        AdaptiveOptions xi_opt = outer_opt;
+        if (x_a > 0.0) xi_opt.rule = KronrodRule::k15;
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));
@@ -249,7 +433,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
                 for (double& v : r) v *= kInvPi;
                 return r;
             },
-            0.0, xi_end, outer_opt));
+            0.0, xi_end, xi_opt));
     }
     if (x_a > x_split) {
         // Towards x_a the phi integrand develops the dip of G2 at phi = pi, so
@@ -266,14 +450,19 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     const double p0 = x_a, p1 = std::min(x_b, kHighX);
     if (p1 > p0) {
         // x = p0 + (p1 - p0) s(u), s(u) = 3u^2 - 2u^3: smooth at both ends.
+        // The integrand has poles a distance pi / 2 from the real x axis
+        // (those of sech^2(x) and of cos(theta_h) at t = +-i), so a long
+        // band needs panels of a few units of x whatever the tolerance:
+        // start from them instead of bisecting down to them.
         const double len = p1 - p0;
-        accumulate(integrate_adaptive<3>(
+        const int panels = static_cast<int>(std::ceil(len / kBandPanelWidth));
+        accumulate(integrate_adaptive_panels<3>(
             [&](double u) {
                 const double x = p0 + len * u * u * (3.0 - 2.0 * u);
                 const double jac = len * 6.0 * u * (1.0 - u);
                 return outer(x, true, jac, 1.0);
             },
-            0.0, 1.0, outer_opt));
+            0.0, 1.0, panels, outer_opt));
     }
     return out;
 }
@@ -313,13 +502,17 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
     accumulate(integrate_adaptive<2>(
         [&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0, 1.0, opt));
     if (b < 1.0) {
+        // Started from panels of at most kLnMuPanelWidth in ln(mu): E(mu)
+        // has complex singularities about pi/2 off the real ln(mu) axis
+        // (near mu ~ alpha), so a long range is bisected down to about that
+        // anyway.
         span = -std::log(b);
-        accumulate(integrate_adaptive<2>(
+        accumulate(integrate_adaptive_panels<2>(
             [&](double v) {
                 const double mu = std::exp(v);
                 return integrand(mu, mu);
             },
-            std::log(b), 0.0, opt));
+            std::log(b), 0.0, static_cast<int>(std::ceil(span / kLnMuPanelWidth)), opt));
     }
     return out;
 }

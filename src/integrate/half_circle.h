@@ -3,6 +3,7 @@
 // the cosines of the nodes taken from a table computed once.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -43,9 +44,27 @@ std::array<double, N + 1> trapezoid_half_circle(F&& f, double tol) {
     for (int n = 1; n <= kHalfCircleSteps / 2; n *= 2) {
         // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
         const int stride = kHalfCircleSteps / n;
-        for (int k = 0; k < n; ++k) {
-            const std::array<double, N> y = sample((2 * k + 1) * stride / 2);
-            for (std::size_t i = 0; i < N; ++i) sum[i] += y[i];
+        // An integrand with a member batch(const double* cos_phi,
+        // std::array<double, N>* y, int n) gets the nodes in chunks (to use
+        // SIMD); it must return exactly what f(cos_phi) returns, and the sum
+        // is taken in the same order either way.
+        if constexpr (requires(const double* c, std::array<double, N>* ys) { f.batch(c, ys, 1); }) {
+            constexpr int kChunk = 32;
+            std::array<double, kChunk> c;
+            std::array<std::array<double, N>, kChunk> ys;
+            for (int k0 = 0; k0 < n; k0 += kChunk) {
+                const int m = std::min(kChunk, n - k0);
+                for (int k = 0; k < m; ++k)
+                    c[static_cast<std::size_t>(k)] = cosines[static_cast<std::size_t>((2 * (k0 + k) + 1) * stride / 2)];
+                f.batch(c.data(), ys.data(), m);
+                for (int k = 0; k < m; ++k)
+                    for (std::size_t i = 0; i < N; ++i) sum[i] += ys[static_cast<std::size_t>(k)][i];
+            }
+        } else {
+            for (int k = 0; k < n; ++k) {
+                const std::array<double, N> y = sample((2 * k + 1) * stride / 2);
+                for (std::size_t i = 0; i < N; ++i) sum[i] += y[i];
+            }
         }
         const double h = kPi / (2.0 * n);
         double err = 0.0;

@@ -19,11 +19,14 @@ namespace {
 constexpr tables::Tolerances kTolerances{1e-5, kGgxTableTolerance, 1e-12};
 
 const char* kQuadratureRule =
-    "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), "
+    "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha) "
+    "(across the clipped band from panels of at most 3 units of x; (7,15) in "
+    "xi = t^2/(alpha^2+t^2) below t = alpha when that is all full circle), "
     "nested with phi clipped analytically to the upper hemisphere (trapezoidal on the "
-    "full circle, Gauss-Kronrod (15,31) in tan(phi/2) on clipped ranges); E_avg: adaptive "
-    "Gauss-Kronrod (7,15) in mu; error per value: QUADPACK estimate plus the integrated "
-    "inner estimates";
+    "full circle, Gauss-Kronrod (15,31) in tan(phi/2), or tan(phi/4) when phi reaches "
+    "past 152 degrees, on clipped ranges); E_avg: adaptive "
+    "Gauss-Kronrod (7,15) in mu (from panels of at most 3 units of ln(mu)); error per "
+    "value: QUADPACK estimate plus the integrated inner estimates";
 const char* kMcSampler = "GGX visible normals (Heitz 2018)";
 
 ModelOption visibility_option() {
