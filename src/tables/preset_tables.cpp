@@ -18,6 +18,9 @@
 namespace brdflut {
 namespace {
 
+// Draft and reference tolerances of every preset channel; the default is the
+// core integral's own.
+tables::Tolerances quality_tolerances(double standard) { return {1e-5, standard, 1e-12}; }
 
 enum class Kind {
     filament_dfg,      // (mu, r): R = B, G = A + B, B = Charlie cloth E
@@ -32,7 +35,8 @@ enum class Kind {
 class PresetEvaluator final : public TexelEvaluator {
 public:
     PresetEvaluator(Kind kind, const TableSettings& s)
-        : kind_(kind), mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed) {}
+        : kind_(kind), mc_(s.method == Method::monte_carlo), samples_(s.samples), seed_(s.seed),
+          quality_(s.quality) {}
 
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const std::uint64_t seed = mix_seed(seed_, texel);
@@ -58,7 +62,8 @@ public:
             case Kind::hdrp_fgd: {
                 const Estimate<2> s = split(c[0], alpha_from_perceptual(c[1]), Visibility::height_correlated, seed);
                 const Estimate<1> d = mc_ ? lobe_albedo_mc(Lobe::disney_diffuse, c[0], c[1], samples_, seed)
-                                          : lobe_albedo(Lobe::disney_diffuse, c[0], c[1]);
+                                          : lobe_albedo(Lobe::disney_diffuse, c[0], c[1],
+                                                        tolerance(kLobeAbsTolerance));
                 out.value = {s.value[1], s.value[0] + s.value[1], d.value[0] - 0.5, 0.0};
                 out.error = {s.error[1], s.error[0] + s.error[1], scale() * d.error[0], 0.0};
                 break;
@@ -71,7 +76,8 @@ public:
             }
             case Kind::cycles_ggx_e_avg: {
                 const Estimate<1> e = mc_ ? ggx_albedo_average_mc(c[0], Visibility::height_correlated, samples_, seed)
-                                          : ggx_albedo_average(c[0], Visibility::height_correlated);
+                                          : ggx_albedo_average(c[0], Visibility::height_correlated,
+                                                               tolerance(kGgxAbsTolerance));
                 out.value[0] = e.value[0];
                 out.error[0] = scale() * e.error[0];
                 break;
@@ -88,19 +94,23 @@ public:
 
 private:
     double scale() const { return mc_ ? tables::kMcErrorSigmas : 1.0; }
+    // A core integral's absolute tolerance at the requested quality: its own
+    // default, or the draft and reference tolerances shared by all presets.
+    double tolerance(double standard) const { return quality_tolerances(standard).at(quality_); }
 
     // {A, B} with errors as stored (Monte Carlo: 4 standard errors; the error
     // of a sum is bounded by the sum of the errors).
     Estimate<2> split(double mu, double alpha, Visibility vis, std::uint64_t seed) const {
         // mu = 0 (end-point grids) gives the grazing limit: see kGrazingMu.
         Estimate<2> e = mc_ ? ggx_split_sum_mc(mu, alpha, vis, samples_, seed)
-                            : ggx_split_sum(mu, alpha, vis, kGgxAbsTolerance);
+                            : ggx_split_sum(mu, alpha, vis, tolerance(kGgxAbsTolerance));
         for (double& x : e.error) x *= scale();
         return e;
     }
 
     Estimate<1> sheen(double mu, double alpha, std::uint64_t seed) const {
-        Estimate<1> e = mc_ ? sheen_charlie_albedo_mc(mu, alpha, samples_, seed) : sheen_charlie_albedo(mu, alpha);
+        Estimate<1> e = mc_ ? sheen_charlie_albedo_mc(mu, alpha, samples_, seed)
+                            : sheen_charlie_albedo(mu, alpha, tolerance(kSheenAbsTolerance));
         e.error[0] *= scale();
         return e;
     }
@@ -109,6 +119,7 @@ private:
     bool mc_;
     long long samples_;
     std::uint64_t seed_;
+    Quality quality_;
 };
 
 AxisSpec cos_theta(int count, Placement placement, Warp warp = Warp::linear) {
@@ -139,9 +150,8 @@ nlohmann::json ggx_model(Visibility vis) {
 }
 
 const char* kQuadratureRule =
-    "per channel the core quadrature: ggx_split_sum, ggx_albedo_average, lobe_albedo "
-    "(Disney diffuse), sheen_charlie_albedo (adaptive Gauss-Kronrod (7,15)); error per value: "
-    "QUADPACK estimate";
+    "per channel the rule of the matching core table: ggx_dfg (split sums), ggx_albedo_avg, "
+    "disney_diffuse_albedo, sheen_charlie_albedo; error per value: that rule's estimate";
 
 struct Entry {
     Kind kind;
@@ -171,7 +181,8 @@ TableDefinition make(Entry e) {
                        ? tables::monte_carlo_method("as the core tables: GGX visible normals (ggx_*), "
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
                                                     "mixture (sheen_*)", s)
-                       : tables::quadrature_method(kQuadratureRule, kGgxAbsTolerance);
+                       : tables::quadrature_method(kQuadratureRule,
+                                                   quality_tolerances(kGgxAbsTolerance).at(s.quality));
         return p;
     };
     return d;
