@@ -93,6 +93,19 @@ inline constexpr std::array<double, 8> kXgk = KronrodNodes<15>::x;
 inline constexpr std::array<double, 8> kWgk = KronrodNodes<15>::wk;
 inline constexpr std::array<double, 4> kWg = KronrodNodes<15>::wg;
 
+// QUADPACK's error estimate of one panel from the difference of its Kronrod
+// and Gauss integrals, resasc (the Kronrod integral of |f - mean|) and the
+// Kronrod integral itself, all over the panel: resasc min(1, (200 |diff| /
+// resasc)^1.5), never below what double rounding of the sum can resolve.
+inline double kronrod_error(double diff, double resasc, double integral) {
+    double err = std::abs(diff);
+    if (resasc != 0.0 && err != 0.0) {
+        const double r = std::min(1.0, 200.0 * err / resasc);
+        err = resasc * r * std::sqrt(r);  // resasc min(1, r)^1.5 without pow()
+    }
+    return std::max(err, 50.0 * 2.220446049250313e-16 * std::abs(integral));
+}
+
 template <std::size_t N>
 struct Interval {
     double a, b;
@@ -151,13 +164,7 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
         double asc = 0.0;
         for (int n = 0; n < K; ++n) asc += wk[n] * std::abs(y[n][i] - mean);
         asc *= std::abs(h);
-        double err = std::abs((k - g) * h);
-        if (asc != 0.0 && err != 0.0) {
-            const double r = std::min(1.0, 200.0 * err / asc);
-            err = asc * r * std::sqrt(r);  // asc min(1, r)^1.5 without pow()
-        }
-        // Never below what double rounding of the sum can resolve.
-        err = std::max(err, 50.0 * 2.220446049250313e-16 * std::abs(k * h));
+        const double err = kronrod_error((k - g) * h, asc, k * h);
         r.value[i] = k * h;
         r.error[i] = err;
         if (i < controlled) r.worst = std::max(r.worst, err);

@@ -69,14 +69,7 @@ std::array<double, 2> even_panel(G&& g) {
     double asc = R::wk[15] * std::abs(y[15] - 0.5 * k);
     for (std::size_t j = 0; j < 15; ++j) asc += 2.0 * R::wk[j] * std::abs(y[j] - 0.5 * k);
     // The panel on [-1, 1] has half-width 1; [0, 1] carries half of it.
-    asc *= 0.5;
-    double err = 0.5 * std::abs(k - gauss);
-    if (asc != 0.0 && err != 0.0) {
-        const double r = std::min(1.0, 200.0 * err / asc);
-        err = asc * r * std::sqrt(r);
-    }
-    err = std::max(err, 50.0 * 2.220446049250313e-16 * std::abs(0.5 * k));
-    return {0.5 * k, err};
+    return {0.5 * k, kronrod_error((k - gauss) * 0.5, 0.5 * asc, 0.5 * k)};
 }
 
 }  // namespace

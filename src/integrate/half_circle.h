@@ -85,22 +85,4 @@ std::array<double, N + 1> trapezoid_half_circle(F&& f, double tol) {
     return out;
 }
 
-// Integral of f(cos(phi)) dphi over the arc where s = tan(phi / 2) runs from
-// s0 to s1 (sign = 1), or s = tan((pi - phi) / 2) does (sign = -1), by
-// adaptive quadrature in s: cos(phi) = sign (1 - s^2) / (1 + s^2) and
-// dphi = 2 ds / (1 + s^2), so a rational f stays rational and no
-// trigonometric function is evaluated. Keeping s within [0, 1] keeps the
-// substitution well conditioned.
-template <std::size_t N, class F>
-Estimate<N> integrate_arc_tan_half(F&& f, double sign, double s0, double s1, const AdaptiveOptions& opt) {
-    return integrate_adaptive<N>(
-        [&](double s) {
-            const double d = 1.0 / (1.0 + s * s);
-            std::array<double, N> y = f(sign * (1.0 - s * s) * d);
-            for (double& v : y) v *= 2.0 * d;
-            return y;
-        },
-        s0, s1, opt);
-}
-
 }  // namespace brdflut::detail
