@@ -288,12 +288,7 @@ Estimate<1> disney_clearcoat_albedo(double mu_o, double gloss, double abs_tol) {
         };
         // Past T = 1.5 (mu_o below about 0.42) one panel over the band always
         // fails; starting from its two halves (split at tau = 0) saves it.
-        const int pieces = big_t > 1.5 ? 2 : 1;
-        AdaptiveOptions piece_opt = outer_opt;
-        piece_opt.abs_tol = outer_opt.abs_tol / pieces;
-        for (int k = 0; k < pieces; ++k)
-            accumulate(integrate_adaptive<2>(band_integrand, static_cast<double>(k) / pieces,
-                                             static_cast<double>(k + 1) / pieces, piece_opt));
+        accumulate(integrate_adaptive_panels<2>(band_integrand, 0.0, 1.0, big_t > 1.5 ? 2 : 1, outer_opt));
     }
     return out;
 }
@@ -406,18 +401,7 @@ Estimate<1> disney_clearcoat_albedo_average(double gloss, double abs_tol) {
         const std::array<double, 2> r = half_vector(cos_h, sin_h, tol_for(mid_budget, w));
         return {w * r[0], w * r[1]};
     };
-    constexpr int kPieces = 2;
-    outer_opt.abs_tol /= kPieces;
-    Estimate<2> e;
-    for (int k = 0; k < kPieces; ++k) {
-        const Estimate<2> part = integrate_adaptive<2>(integrand, static_cast<double>(k) / kPieces,
-                                                       static_cast<double>(k + 1) / kPieces, outer_opt);
-        for (int i = 0; i < 2; ++i) {
-            e.value[i] += part.value[i];
-            e.error[i] += part.error[i];
-        }
-        e.evaluations += part.evaluations;
-    }
+    const Estimate<2> e = integrate_adaptive_panels<2>(integrand, 0.0, 1.0, 2, outer_opt);
     Estimate<1> out;
     out.value[0] = e.value[0];
     out.error[0] = e.error[0] + e.value[1];
