@@ -214,3 +214,61 @@ TEST(Exr, ReadingAMissingOrCorruptFileIsAClearError) {
     }
     EXPECT_THROW(read_exr(dir / "junk.exr"), RuntimeError);
 }
+
+namespace {
+// The bytes of a small valid table file, and the offset of the value of the
+// header attribute `name` (just after its 4-byte size).
+std::string table_bytes(const TempDir& dir) {
+    const Table t = generate(find_table("ggx_dfg"), small("ggx_dfg", 4));
+    write_exr(dir / "ok.exr", t, PixelType::float32);
+    return brdflut::test::read_file(dir / "ok.exr");
+}
+std::size_t attribute_value(const std::string& bytes, const std::string& name, const std::string& type) {
+    const std::string key = name + '\0' + type + '\0';
+    const std::size_t at = bytes.find(key);
+    EXPECT_NE(at, std::string::npos) << name;
+    return at + key.size() + 4;
+}
+void put_int32(std::string& bytes, std::size_t at, std::int32_t v) {
+    for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>((static_cast<std::uint32_t>(v) >> (8 * i)) & 0xff);
+}
+std::string read_error(const std::string& bytes) {
+    try {
+        read_exr_memory(bytes.data(), bytes.size(), "damaged");
+    } catch (const RuntimeError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+}  // namespace
+
+// Headers that claim more memory than the file could fill are refused by
+// what they declare, before OpenEXR's C++ reader allocates for them.
+TEST(Exr, HeadersDeclaringHugeSizesAreRefusedWithTheReason) {
+    TempDir dir;
+    const std::string good = table_bytes(dir);
+    EXPECT_EQ(read_error(good), "(no error)");
+
+    std::string attr = good;  // the metadata string claims 2 GB
+    put_int32(attr, attribute_value(attr, "brdflut", "string") - 4, 0x7fff0000);
+    EXPECT_NE(read_error(attr).find("not a valid OpenEXR file (Attribute 'brdflut', type 'string': Invalid size"),
+              std::string::npos) << read_error(attr);
+
+    const std::size_t dw = attribute_value(good, "dataWindow", "box2i");  // min.x, min.y, max.x, max.y
+    std::string big = good;  // 16384 x 16384 pixels
+    put_int32(big, dw + 8, 16383);
+    put_int32(big, dw + 12, 16383);
+    EXPECT_NE(read_error(big).find("part 0 is 16384x16384 pixels with 2 channel(s); supported are at most 67108864 "
+                                   "pixels"),
+              std::string::npos) << read_error(big);
+
+    std::string wide = good;  // 16 M pixels wide: one 16-line zip block would need 2 GB
+    put_int32(wide, dw + 8, 16777215);
+    EXPECT_NE(read_error(wide).find("part 0 is stored in blocks of 16777216x16 pixels of 8 bytes"), std::string::npos)
+        << read_error(wide);
+
+    std::string tall = good;  // 4 M rows of zip blocks need a 2 MB offset table
+    put_int32(tall, dw + 12, (1 << 22) - 1);
+    EXPECT_NE(read_error(tall).find("truncated: part 0 declares 262144 blocks but the file has"), std::string::npos)
+        << read_error(tall);
+}
