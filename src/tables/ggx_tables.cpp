@@ -16,7 +16,7 @@ namespace brdflut {
 namespace {
 
 // Absolute tolerance of the quadrature at each quality.
-constexpr tables::Tolerances kTolerances{1e-5, kGgxTableTolerance, 1e-12};
+constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(kGgxTableTolerance);
 
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha) "

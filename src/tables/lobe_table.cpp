@@ -9,7 +9,7 @@ namespace brdflut::tables {
 namespace {
 
 // Absolute tolerance of the quadrature at each quality.
-constexpr Tolerances kTolerances{1e-5, kLobeAbsTolerance, 1e-12};
+constexpr Tolerances kTolerances = quadrature_tolerances(kLobeAbsTolerance);
 
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (7,15), split at every kink of the integrand: the phi integral in "

@@ -18,10 +18,6 @@
 namespace brdflut {
 namespace {
 
-// Draft and reference tolerances of every preset channel; the default is the
-// core integral's own.
-tables::Tolerances quality_tolerances(double standard) { return {1e-5, standard, 1e-12}; }
-
 enum class Kind {
     filament_dfg,      // (mu, r): R = B, G = A + B, B = Charlie cloth E
     unreal_dfg,        // (mu, r): R = A, G = B, Schlick-Smith k = alpha/2
@@ -94,9 +90,9 @@ public:
 
 private:
     double scale() const { return mc_ ? tables::kMcErrorSigmas : 1.0; }
-    // A core integral's absolute tolerance at the requested quality: its own
-    // default, or the draft and reference tolerances shared by all presets.
-    double tolerance(double standard) const { return quality_tolerances(standard).at(quality_); }
+    // A core integral's absolute tolerance at the requested quality, as its
+    // own table takes it.
+    double tolerance(double standard) const { return tables::quadrature_tolerances(standard).at(quality_); }
 
     // {A, B} with errors as stored (Monte Carlo: 4 standard errors; the error
     // of a sum is bounded by the sum of the errors).
@@ -182,7 +178,7 @@ TableDefinition make(Entry e) {
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
                                                     "mixture (sheen_*)", s)
                        : tables::quadrature_method(kQuadratureRule,
-                                                   quality_tolerances(kGgxAbsTolerance).at(s.quality));
+                                                   tables::quadrature_tolerances(kGgxAbsTolerance).at(s.quality));
         return p;
     };
     return d;

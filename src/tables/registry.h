@@ -33,6 +33,10 @@ struct Tolerances {
     }
 };
 
+// The draft and reference tolerances shared by the integrated (non-Fresnel)
+// tables, around a table's own default.
+constexpr Tolerances quadrature_tolerances(double standard) { return {1e-5, standard, 1e-12}; }
+
 // Method metadata of the adaptive quadrature and of the Monte Carlo route.
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
 nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);

@@ -11,7 +11,7 @@ namespace brdflut {
 namespace {
 
 // Absolute tolerance of the quadrature at each quality.
-constexpr tables::Tolerances kTolerances{1e-5, kSheenAbsTolerance, 1e-12};
+constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(kSheenAbsTolerance);
 
 const char* kQuadratureRule =
     "closed form over phi (the integrand is rational in cos(phi) at fixed theta_h, clipped "
