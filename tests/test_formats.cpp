@@ -2,6 +2,7 @@
 // field against their specifications, and the CLI's --format.
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
 #include <Imath/half.h>
 
 #include <cmath>
@@ -678,6 +679,97 @@ TEST(ReadTableImage, UnknownOrTruncatedFilesAreClearErrors) {
     } catch (const RuntimeError& e) {
         EXPECT_NE(std::string(e.what()).find("cut.ktx2"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}
+
+namespace {
+void append_to_string(png_structp png, png_bytep data, png_size_t n) {
+    static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<const char*>(data), n);
+}
+}  // namespace
+
+// A 16-bit PNG from another tool: interlaced (Adam7), with its metadata text
+// after the image data. Both are legal, and brdflut's own writer uses neither.
+TEST(ReadTableImage, ReadsInterlacedPng16WithTextAfterTheImage) {
+    constexpr int kW = 7, kH = 5, kC = 3;
+    std::vector<std::uint16_t> v(kW * kH * kC);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<std::uint16_t>((i * 977 + 13) % 65536);
+    std::vector<png_byte> bytes(v.size() * 2);
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        bytes[2 * i] = static_cast<png_byte>(v[i] >> 8);
+        bytes[2 * i + 1] = static_cast<png_byte>(v[i] & 0xff);
+    }
+    std::vector<png_bytep> rows(kH);
+    for (int y = 0; y < kH; ++y) rows[static_cast<std::size_t>(y)] = bytes.data() + y * kW * kC * 2;
+    std::string file;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    ASSERT_FALSE(setjmp(png_jmpbuf(png)));
+    png_set_write_fn(png, &file, append_to_string, nullptr);
+    png_set_IHDR(png, info, kW, kH, 16, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_ADAM7, PNG_COMPRESSION_TYPE_DEFAULT,
+                 PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_write_image(png, rows.data());
+    char key[] = "brdflut", value[] = "{\"table\":\"foreign\"}";
+    png_text text{};
+    text.compression = PNG_TEXT_COMPRESSION_NONE;
+    text.key = key;
+    text.text = value;
+    png_set_text(png, info, &text, 1);  // written by png_write_end, after IDAT
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    ASSERT_LT(file.find("IDAT"), file.find("tEXt"));
+
+    TempDir dir;
+    std::ofstream(dir / "foreign.png", std::ios::binary) << file;
+    const ExrImage img = read_table_image(dir / "foreign.png");
+    EXPECT_EQ(img.width, kW);
+    EXPECT_EQ(img.height, kH);
+    ASSERT_EQ(img.pixels.size(), v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) EXPECT_EQ(img.pixels[i], v[i] / 65535.0) << i;
+    ASSERT_TRUE(img.has_metadata);
+    EXPECT_EQ(img.metadata.at("table"), "foreign");
+}
+
+namespace {
+void put_u32(std::string& b, std::size_t at, std::uint32_t v, bool big_endian = false) {
+    for (int i = 0; i < 4; ++i)
+        b[at + static_cast<std::size_t>(i)] = static_cast<char>(v >> (8 * (big_endian ? 3 - i : i)) & 0xff);
+}
+}  // namespace
+
+// A header that declares more pixels than any table is refused from the
+// header, by the same limit in every format (the EXR reader's is tested in
+// test_tables.cpp), before the texels are read or decoded.
+TEST(ReadTableImage, HeadersDeclaringMoreThanAnyTableAreRefusedWithTheLimit) {
+    TempDir dir;
+    const std::string limit = "the image is 65535x65535 pixels with 4 channel(s); supported are at most 67108864 "
+                              "pixels, 64 channels and 268435456 values";
+    for (const Format f : {Format::dds, Format::ktx2, Format::png16}) {
+        SCOPED_TRACE(to_string(f));
+        const std::string path = dir / ("t." + file_extension(f));
+        write_table(path, make_table(4, 5, 3), PixelType::float32, f);
+        std::string b = read_file(path);
+        if (f == Format::dds) {  // dwHeight at 12, dwWidth at 16
+            put_u32(b, 12, 65535);
+            put_u32(b, 16, 65535);
+        } else if (f == Format::ktx2) {  // pixelWidth at 20, pixelHeight at 24
+            put_u32(b, 20, 65535);
+            put_u32(b, 24, 65535);
+        } else {  // IHDR: width at 16, height at 20 (big-endian), CRC of type and data at 29
+            ASSERT_EQ(b.compare(12, 4, "IHDR"), 0);
+            put_u32(b, 16, 65535, true);
+            put_u32(b, 20, 65535, true);
+            put_u32(b, 29, static_cast<std::uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(b.data() + 12), 17)),
+                    true);
+        }
+        std::ofstream(path, std::ios::binary) << b;
+        try {
+            read_table_image(path);
+            FAIL() << "expected an error";
+        } catch (const RuntimeError& e) {
+            EXPECT_NE(std::string(e.what()).find(limit), std::string::npos) << e.what();
+        }
     }
 }
 

@@ -18,9 +18,9 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "brdflut/axis.h"
 #include "brdflut/error.h"
 #include "io/atomic_file.h"
+#include "io/image_limits.h"
 #include "io/table_checks.h"
 
 namespace brdflut {
@@ -100,10 +100,6 @@ private:
 
 constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
 
-// Channels and samples (pixels times channels) a readable image may have.
-// No brdflut table has more than 4 channels or kMaxTexels texels.
-constexpr int kMaxChannels = 64;
-constexpr long long kMaxSamples = 4 * kMaxTexels;
 // Bytes of one compressed chunk (a block of scan lines, or a tile) once
 // decoded; OpenEXR allocates its buffers from this. A table is at most
 // kMaxAxisCount wide, so 4 float channels in 256-line chunks fit.
@@ -170,10 +166,8 @@ std::string preflight(const char* data, std::size_t size) {
         const long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
         const long long h = static_cast<long long>(dw.max.y) - dw.min.y + 1;
         const int nc = channels->num_channels;
-        if (w < 1 || h < 1 || w * h > kMaxTexels || nc > kMaxChannels || w * h * nc > kMaxSamples) {
-            why = part + " is " + std::to_string(w) + "x" + std::to_string(h) + " pixels with " + std::to_string(nc) +
-                  " channel(s); supported are at most " + std::to_string(kMaxTexels) + " pixels, " +
-                  std::to_string(kMaxChannels) + " channels and " + std::to_string(kMaxSamples) + " values";
+        if (const std::string size = image_size_problem(w, h, nc); !size.empty()) {
+            why = part + " " + size;
             break;
         }
         long long pixel_bytes = 0;

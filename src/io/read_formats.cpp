@@ -10,6 +10,7 @@
 
 #include "brdflut/error.h"
 #include "brdflut/formats.h"
+#include "io/image_limits.h"
 
 namespace brdflut {
 namespace {
@@ -54,9 +55,10 @@ void read_texels(const Bytes& f, std::size_t at, ExrImage& img, int channels, Pi
     }
 }
 
-void set_size(const Bytes& f, ExrImage& img, std::uint64_t w, std::uint64_t h) {
-    if (w < 1 || h < 1 || w * h > (1ULL << 28))
-        f.fail("image size " + std::to_string(w) + "x" + std::to_string(h) + " is not supported");
+void set_size(const Bytes& f, ExrImage& img, std::uint64_t w, std::uint64_t h, int channels) {
+    if (const std::string why = image_size_problem(static_cast<long long>(w), static_cast<long long>(h), channels);
+        !why.empty())
+        f.fail("the image " + why);
     img.width = static_cast<int>(w);
     img.height = static_cast<int>(h);
 }
@@ -75,7 +77,6 @@ ExrImage read_dds(const Bytes& f) {
     if (f.u32(4) != 124 || f.u32(76) != 32 || f.b.compare(84, 4, "DX10") != 0)
         f.fail("not a DDS file with a DX10 header");
     ExrImage img;
-    set_size(f, img, f.u32(16), f.u32(12));
     if (f.u32(132) != 3 || f.u32(140) != 1) f.fail("only single 2-D textures are read");
     int channels = 0;
     PixelType pixel = PixelType::float32;
@@ -88,6 +89,7 @@ ExrImage read_dds(const Bytes& f) {
         case 2: channels = 4; break;
         default: f.fail("DXGI format " + std::to_string(f.u32(128)) + " is not one brdflut writes");
     }
+    set_size(f, img, f.u32(16), f.u32(12), channels);
     read_texels(f, 148, img, channels, pixel);
     return img;
 }
@@ -107,7 +109,7 @@ ExrImage read_ktx2(const Bytes& f) {
     }
     if (f.u32(28) != 0 || f.u32(32) != 0 || f.u32(36) != 1 || f.u32(44) != 0)
         f.fail("only single 2-D textures without supercompression are read");
-    set_size(f, img, f.u32(20), std::max<std::uint32_t>(1, f.u32(24)));
+    set_size(f, img, f.u32(20), std::max<std::uint32_t>(1, f.u32(24)), channels);
     // Key/value data: look for the `brdflut` key.
     const std::size_t kvd = f.u32(56), kvd_end = kvd + f.u32(60);
     for (std::size_t at = kvd; at + 4 <= kvd_end;) {
@@ -139,9 +141,11 @@ void png_read_from_memory(png_structp png, png_bytep data, png_size_t n) {
 }
 
 // libpng reports errors by longjmp: only trivially destructible objects live
-// across setjmp here; results go to the caller's buffers.
+// across setjmp here; results go to the caller's buffers. The pixels are
+// decoded only when the header shows 16 bits and a size within the limits,
+// into `big_endian` as the file's big-endian sample bytes.
 bool decode_png16(const std::string* bytes, png_uint_32* w, png_uint_32* h, int* channels, int* depth,
-                  std::vector<std::uint16_t>* samples, std::string* text) {
+                  std::vector<unsigned char>* big_endian, std::string* text) {
     PngReadState state{bytes, 0};
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     if (png == nullptr) return false;
@@ -151,23 +155,22 @@ bool decode_png16(const std::string* bytes, png_uint_32* w, png_uint_32* h, int*
         return false;
     }
     png_set_read_fn(png, &state, png_read_from_memory);
-    png_read_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+    png_read_info(png, info);
     *w = png_get_image_width(png, info);
     *h = png_get_image_height(png, info);
     *channels = png_get_channels(png, info);
     *depth = png_get_bit_depth(png, info);
+    if (*depth == 16 && image_size_problem(*w, *h, *channels).empty()) {
+        const std::size_t row = static_cast<std::size_t>(*w) * static_cast<std::size_t>(*channels) * 2;
+        big_endian->resize(row * *h);
+        for (int pass = png_set_interlace_handling(png); pass > 0; --pass)
+            for (png_uint_32 y = 0; y < *h; ++y) png_read_row(png, big_endian->data() + y * row, nullptr);
+        png_read_end(png, info);  // text chunks after the image data
+    }
     png_textp t = nullptr;
     const int n = png_get_text(png, info, &t, nullptr);
     for (int i = 0; i < n; ++i)
         if (std::strcmp(t[i].key, "brdflut") == 0) text->assign(t[i].text, t[i].itxt_length ? t[i].itxt_length : t[i].text_length);
-    if (*depth == 16 && *w > 0 && *h > 0 && static_cast<std::uint64_t>(*w) * *h <= (1ULL << 28)) {
-        png_bytepp rows = png_get_rows(png, info);
-        samples->resize(static_cast<std::size_t>(*w) * *h * static_cast<std::size_t>(*channels));
-        std::size_t k = 0;
-        for (png_uint_32 y = 0; y < *h; ++y)
-            for (std::size_t i = 0; i < static_cast<std::size_t>(*w) * static_cast<std::size_t>(*channels); ++i)
-                (*samples)[k++] = static_cast<std::uint16_t>(rows[y][2 * i] << 8 | rows[y][2 * i + 1]);
-    }
     png_destroy_read_struct(&png, &info, nullptr);
     return true;
 }
@@ -175,16 +178,17 @@ bool decode_png16(const std::string* bytes, png_uint_32* w, png_uint_32* h, int*
 ExrImage read_png16_image(const Bytes& f) {
     png_uint_32 w = 0, h = 0;
     int channels = 0, depth = 0;
-    std::vector<std::uint16_t> samples;
+    std::vector<unsigned char> big_endian;
     std::string text;
-    if (!decode_png16(&f.b, &w, &h, &channels, &depth, &samples, &text)) f.fail("not a readable PNG file");
+    if (!decode_png16(&f.b, &w, &h, &channels, &depth, &big_endian, &text)) f.fail("not a readable PNG file");
     if (depth != 16) f.fail("only 16-bit PNG files are read (this one has " + std::to_string(depth) + " bits)");
     ExrImage img;
-    set_size(f, img, w, h);
+    set_size(f, img, w, h, channels);
     img.pixel = PixelType::float32;
     img.channel_names.assign(kChannelNames, kChannelNames + channels);
-    img.pixels.reserve(samples.size());
-    for (const std::uint16_t q : samples) img.pixels.push_back(q / 65535.0);
+    img.pixels.reserve(big_endian.size() / 2);
+    for (std::size_t i = 0; i + 1 < big_endian.size(); i += 2)
+        img.pixels.push_back((big_endian[i] << 8 | big_endian[i + 1]) / 65535.0);
     img.unorm16 = true;
     if (!text.empty()) parse_metadata(f, img, text);
     return img;
