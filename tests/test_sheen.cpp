@@ -60,8 +60,11 @@ double albedo_by_direct_integration(double mu_o, double alpha) {
 
 TEST(SheenAlbedo, MatchesADirectIntegralOverTheIncidentHemisphere) {
     // Texels of the default 128 x 128 table, among them (1/256, 0.0952), where
-    // an earlier nested rule was off by 9e-10 while estimating 2e-13.
-    const double texels[][2] = {{0.5 / 128, 39.5 / 128}, {6.5 / 128, 109.5 / 128}, {70.5 / 128, 20.5 / 128}};
+    // an earlier nested rule was off by 9e-10 while estimating 2e-13, and the
+    // views on either side of mu = 0.98, below which the phi integral is in
+    // closed form and above which it is taken by Gauss-Kronrod.
+    const double texels[][2] = {{0.5 / 128, 39.5 / 128}, {6.5 / 128, 109.5 / 128}, {70.5 / 128, 20.5 / 128},
+                                {125.5 / 128, 60.5 / 128}, {124.5 / 128, 6.5 / 128}, {127.5 / 128, 100.5 / 128}};
     for (const auto& t : texels) {
         const double mu = t[0], alpha = t[1] * t[1];
         const Estimate<1> q = sheen_charlie_albedo(mu, alpha);

@@ -1,5 +1,10 @@
 // Generated tables: metadata, EXR round trip and thread independence.
 #include <gtest/gtest.h>
+#include <ImfChannelList.h>
+#include <ImfDeepFrameBuffer.h>
+#include <ImfDeepScanLineOutputFile.h>
+#include <ImfPartType.h>
+#include <ImfHeader.h>
 
 #include <cmath>
 #include <map>
@@ -271,4 +276,29 @@ TEST(Exr, HeadersDeclaringHugeSizesAreRefusedWithTheReason) {
     put_int32(tall, dw + 12, (1 << 22) - 1);
     EXPECT_NE(read_error(tall).find("truncated: part 0 declares 262144 blocks but the file has"), std::string::npos)
         << read_error(tall);
+}
+
+// Deep data (a sample list per pixel) is valid OpenEXR but no table.
+TEST(Exr, DeepDataIsRefusedByName) {
+    TempDir dir;
+    {
+        Imf::Header h(2, 2);
+        h.setType(Imf::DEEPSCANLINE);
+        h.compression() = Imf::ZIPS_COMPRESSION;
+        h.channels().insert("R", Imf::Channel(Imf::FLOAT));
+        Imf::DeepScanLineOutputFile out((dir / "deep.exr").c_str(), h);
+        unsigned int counts[4] = {1, 1, 1, 1};
+        float values[4] = {0.1f, 0.2f, 0.3f, 0.4f};
+        float* pointers[4] = {&values[0], &values[1], &values[2], &values[3]};
+        Imf::DeepFrameBuffer fb;
+        fb.insertSampleCountSlice(Imf::Slice(Imf::UINT, reinterpret_cast<char*>(counts), sizeof(unsigned int),
+                                             2 * sizeof(unsigned int)));
+        fb.insert("R", Imf::DeepSlice(Imf::FLOAT, reinterpret_cast<char*>(pointers), sizeof(float*),
+                                      2 * sizeof(float*), sizeof(float)));
+        out.setFrameBuffer(fb);
+        out.writePixels(2);
+    }
+    const std::string deep = brdflut::test::read_file(dir / "deep.exr");
+    EXPECT_NE(read_error(deep).find("part 0 holds deep data, which no table uses"), std::string::npos)
+        << read_error(deep);
 }
