@@ -269,8 +269,7 @@ Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
         }
         return detail::adaptive_from<N>(f, std::vector<detail::Interval<N>>{first}, opt, out);
     }
-    std::vector<detail::Interval<N>> heap;
-    heap.reserve(static_cast<std::size_t>(std::max(opt.max_intervals, panels)) + 1);
+    std::vector<detail::Interval<N>> heap;  // adaptive_from reserves the room to bisect
     for (int k = 0; k < panels; ++k) {
         const double lo = k == 0 ? a : a + (b - a) * k / panels;
         const double hi = k + 1 == panels ? b : a + (b - a) * (k + 1) / panels;

@@ -45,8 +45,9 @@ Estimate<1> lobe_albedo_average(Lobe lobe, double p, double abs_tol) {
     // 2 * integral of E(mu) mu dmu = integral over theta in [0, pi/2] of
     // E(cos(theta)) sin(2 theta) dtheta: in theta the square-root behaviour of
     // the Oren-Nayar albedos at mu = 1 is smooth. The range is broken at
-    // mu = 1/4, 1/16, 1/64 (placed where the clearcoat's masking and Fresnel
-    // change fast, before it had a route of its own).
+    // mu = 1/4, 1/16, 1/64, where the clearcoat's masking and Fresnel change
+    // fast; the clearcoat no longer comes here, but the breaks cost the other
+    // lobes little and removing them would change their stored tables.
     const double breaks[] = {0.0, std::acos(0.25), std::acos(1.0 / 16), std::acos(1.0 / 64),
                              0.5 * kPi};
     AdaptiveOptions opt;
