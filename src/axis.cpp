@@ -1,23 +1,78 @@
 #include "brdflut/axis.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "brdflut/error.h"
 
 namespace brdflut {
+namespace {
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+std::string finite_range(double min, double max) {
+    if (!std::isfinite(min) || !std::isfinite(max)) return "range must be finite";
+    if (min == max) return "range " + number(min) + ":" + number(max) + " is empty; min and max must differ";
+    return {};
+}
+
+// Cycles' IOR coordinate z = sqrt((n - 1)/(n + 1)); z(inf) = 1.
+double ior_z(double n) { return std::isinf(n) ? 1.0 : std::sqrt(std::max(0.0, (n - 1.0) / (n + 1.0))); }
+double ior_of_z(double z) { return z >= 1.0 ? HUGE_VAL : (1.0 + z * z) / (1.0 - z * z); }
+
+const std::vector<WarpDef> kWarps = {
+    {Warp::linear, "linear", "min + (max - min) u", "most axes (Filament, glTF, Godot: mu and r)",
+     [](double u, double lo, double hi) { return lo + (hi - lo) * u; },
+     [](double v, double lo, double hi) { return (v - lo) / (hi - lo); }, finite_range,
+     "(v - lo) / (hi - lo)"},
+    {Warp::square, "square", "min + (max - min) u^2",
+     "u = sqrt(alpha) (Cycles), u = sqrt(mu) (HDRP FGD); with range 1:0, u = sqrt(1 - mu) "
+     "(EEVEE split sum, Heitz LTC, HDRP LTC)",
+     [](double u, double lo, double hi) { return lo + (hi - lo) * u * u; },
+     [](double v, double lo, double hi) { return std::sqrt(std::max(0.0, (v - lo) / (hi - lo))); }, finite_range,
+     "sqrt(max((v - lo) / (hi - lo), 0.0))"},
+    {Warp::sqrt, "sqrt", "min + (max - min) sqrt(u)", "",
+     [](double u, double lo, double hi) { return lo + (hi - lo) * std::sqrt(u); },
+     [](double v, double lo, double hi) {
+         const double s = std::max(0.0, (v - lo) / (hi - lo));
+         return s * s;
+     },
+     finite_range, "max((v - lo) / (hi - lo), 0.0) * max((v - lo) / (hi - lo), 0.0)"},
+    {Warp::log, "log", "min (max / min)^u", "distances (dipole radius)",
+     [](double u, double lo, double hi) { return lo * std::pow(hi / lo, u); },
+     [](double v, double lo, double hi) { return std::log(v / lo) / std::log(hi / lo); },
+     [](double lo, double hi) -> std::string {
+         if (std::string why = finite_range(lo, hi); !why.empty()) return why;
+         if (!(lo > 0.0) || !(hi > 0.0))
+             return "warp 'log' needs min > 0 and max > 0 (got " + number(lo) + ":" + number(hi) + ")";
+         return {};
+     },
+     "log(v / lo) / log(hi / lo)"},
+    {Warp::ior_z, "ior_z",
+     "n(z) = (1 + z^2)/(1 - z^2), z = z(min) + (z(max) - z(min)) u, z(n) = sqrt((n - 1)/(n + 1))",
+     "index of refraction (Cycles glass tables, z in [0, 1] for n in [1, inf])",
+     [](double u, double lo, double hi) { return ior_of_z(ior_z(lo) + (ior_z(hi) - ior_z(lo)) * u); },
+     [](double v, double lo, double hi) { return (ior_z(v) - ior_z(lo)) / (ior_z(hi) - ior_z(lo)); },
+     [](double lo, double hi) -> std::string {
+         if (std::isnan(lo) || std::isnan(hi) || std::isinf(lo) || hi == -HUGE_VAL) return "range must be finite";
+         if (!(lo >= 1.0) || !(hi >= 1.0))
+             return "warp 'ior_z' needs min >= 1 and max >= 1 (got " + number(lo) + ":" + number(hi) + ")";
+         if (lo == hi) return "range " + number(lo) + ":" + number(hi) + " is empty; min and max must differ";
+         return {};
+     },
+     "(sqrt(max((v - 1.0) / (v + 1.0), 0.0)) - sqrt((lo - 1.0) / (lo + 1.0))) / "
+     "(sqrt((hi - 1.0) / (hi + 1.0)) - sqrt((lo - 1.0) / (lo + 1.0)))"},
+};
+
+}  // namespace
 
 std::string_view to_string(Placement p) { return p == Placement::center ? "center" : "endpoints"; }
-
-std::string_view to_string(Warp w) {
-    switch (w) {
-        case Warp::linear: return "linear";
-        case Warp::square: return "square";
-        case Warp::sqrt: return "sqrt";
-        case Warp::log: return "log";
-    }
-    return "linear";
-}
 
 Placement placement_from_string(std::string_view s) {
     if (s == "center") return Placement::center;
@@ -25,67 +80,68 @@ Placement placement_from_string(std::string_view s) {
     throw Error("placement '" + std::string(s) + "' is not known; allowed: center, endpoints");
 }
 
+const std::vector<WarpDef>& warps() { return kWarps; }
+
+const WarpDef& warp_def(Warp w) {
+    for (const WarpDef& d : kWarps)
+        if (d.warp == w) return d;
+    return kWarps.front();
+}
+
+std::string_view to_string(Warp w) { return warp_def(w).name; }
+
 Warp warp_from_string(std::string_view s) {
-    if (s == "linear") return Warp::linear;
-    if (s == "square") return Warp::square;
-    if (s == "sqrt") return Warp::sqrt;
-    if (s == "log") return Warp::log;
-    throw Error("warp '" + std::string(s) + "' is not known; allowed: linear, square, sqrt, log");
+    std::string known;
+    for (const WarpDef& d : kWarps) {
+        if (s == d.name) return d.warp;
+        known += (known.empty() ? "" : ", ") + std::string(d.name);
+    }
+    throw Error("warp '" + std::string(s) + "' is not known; allowed: " + known);
 }
 
 double Axis::u(int i) const {
-    if (placement == Placement::center) return (i + 0.5) / count;
-    return count > 1 ? static_cast<double>(i) / (count - 1) : 0.0;
+    const int j = flip ? count - 1 - i : i;
+    if (placement == Placement::center) return (j + 0.5) / count;
+    return count > 1 ? static_cast<double>(j) / (count - 1) : 0.0;
 }
 
 double Axis::value_at_u(double t) const {
-    double v = min;
-    switch (warp) {
-        case Warp::linear: v = min + (max - min) * t; break;
-        case Warp::square: v = min + (max - min) * t * t; break;
-        case Warp::sqrt: v = min + (max - min) * std::sqrt(t); break;
-        case Warp::log: v = min * std::pow(max / min, t); break;
-    }
     // The end points are exact, whatever the rounding of the warp.
-    if (t == 0.0) v = min;
-    if (t == 1.0) v = max;
-    return v;
+    if (t == 0.0) return min;
+    if (t == 1.0) return max;
+    return warp_def(warp).value(t, min, max);
 }
 
-double Axis::value(int i) const { return value_at_u(u(i)); }
+double Axis::clamped(double v) const { return std::min(std::max(v, clamp_lo), clamp_hi); }
 
-double Axis::u_of_value(double v) const {
-    const double s = (v - min) / (max - min);
-    switch (warp) {
-        case Warp::linear: return s;
-        case Warp::square: return std::sqrt(std::max(0.0, s));
-        case Warp::sqrt: return s * s;
-        case Warp::log: return std::log(v / min) / std::log(max / min);
-    }
-    return s;
+double Axis::value(int i) const { return clamped(value_at_u(u(i))); }
+
+double Axis::u_of_value(double v) const { return warp_def(warp).u_of_value(clamped(v), min, max); }
+
+double Axis::position_of_value(double v) const {
+    const double t = u_of_value(v);
+    const double p = placement == Placement::center ? t * count - 0.5 : t * (count - 1);
+    return flip ? count - 1 - p : p;
 }
+
+bool Axis::has_clamp() const { return clamp_lo != -HUGE_VAL || clamp_hi != HUGE_VAL; }
+
+double Axis::lowest() const { return clamped(std::min(min, max)); }
+double Axis::highest() const { return clamped(std::max(min, max)); }
 
 void Axis::validate() const {
-    auto fail = [&](const std::string& what) {
-        throw Error("axis '" + name + "': " + what);
-    };
+    auto fail = [&](const std::string& what) { throw Error("axis '" + name + "': " + what); };
     if (count < 1 || count > kMaxAxisCount) {
-        fail("count " + std::to_string(count) + " is out of range; allowed: 1 to " +
-             std::to_string(kMaxAxisCount));
+        fail("count " + std::to_string(count) + " is out of range; allowed: 1 to " + std::to_string(kMaxAxisCount));
     }
     if (placement == Placement::endpoints && count < 2)
         fail("placement 'endpoints' needs a count of at least 2 (got " + std::to_string(count) + ")");
-    if (!std::isfinite(min) || !std::isfinite(max)) fail("range must be finite");
-    if (!(min < max)) {
-        std::ostringstream s;
-        s << "range " << min << ":" << max << " is empty; min must be below max";
-        fail(s.str());
-    }
-    if (warp == Warp::log && !(min > 0.0)) {
-        std::ostringstream s;
-        s << "warp 'log' needs min > 0 (got " << min << ")";
-        fail(s.str());
-    }
+    if (const std::string why = warp_def(warp).range_problem(min, max); !why.empty()) fail(why);
+    if (std::isnan(clamp_lo) || std::isnan(clamp_hi) || !(clamp_lo <= clamp_hi))
+        fail("clamp " + number(clamp_lo) + ":" + number(clamp_hi) + " is not valid; allowed: LO:HI with LO <= HI");
+    if (!std::isfinite(lowest()) || !std::isfinite(highest()))
+        fail("range " + number(min) + ":" + number(max) +
+             " reaches an infinite parameter; clamp it to a finite one with --clamp " + name + "=LO:HI");
 }
 
 }  // namespace brdflut

@@ -64,25 +64,55 @@ std::string format_number(double v) {
 }
 }  // namespace
 
+std::vector<int> definition_axis_order(const TableDefinition& def, const TableSettings& s) {
+    auto names = [](const std::vector<std::string>& v) {
+        std::string out;
+        for (const auto& n : v) out += (out.empty() ? "" : ", ") + n;
+        return out;
+    };
+    std::vector<std::string> want, got;
+    for (const AxisSpec& a : def.axes) want.push_back(a.axis.name);
+    for (const Axis& a : s.axes) got.push_back(a.name);
+    if (got.size() != want.size())
+        throw Error("table '" + def.id + "' has " + std::to_string(want.size()) + " axes (" + names(want) +
+                    "); got settings for " + std::to_string(got.size()) + " (" + names(got) + ")");
+    std::vector<int> order;
+    for (const std::string& name : got) {
+        const auto it = std::find(want.begin(), want.end(), name);
+        if (it == want.end() ||
+            std::find(order.begin(), order.end(), static_cast<int>(it - want.begin())) != order.end())
+            throw Error("table '" + def.id + "': the axes " + names(got) + " are not an order of its axes " +
+                        names(want));
+        order.push_back(static_cast<int>(it - want.begin()));
+    }
+    return order;
+}
+
 void validate_settings(const TableDefinition& def, const TableSettings& s) {
-    if (s.axes.size() != def.axes.size())
-        throw Error("table '" + def.id + "' has " + std::to_string(def.axes.size()) +
-                    " axes; got settings for " + std::to_string(s.axes.size()));
+    const std::vector<int> order = definition_axis_order(def, s);
     long long texels = 1;
     for (std::size_t i = 0; i < s.axes.size(); ++i) {
         const Axis& a = s.axes[i];
-        const AxisSpec& spec = def.axes[i];
-        if (a.name != spec.axis.name)
-            throw Error("table '" + def.id + "': axis " + std::to_string(i) + " is '" +
-                        spec.axis.name + "', not '" + a.name + "'");
+        const AxisSpec& spec = def.axes[static_cast<std::size_t>(order[i])];
         a.validate();
-        if (a.min < spec.domain_min || a.max > spec.domain_max)
-            throw Error("table '" + def.id + "': axis '" + a.name + "' range " +
-                        format_number(a.min) + ":" + format_number(a.max) +
-                        " is outside the model's domain; allowed: within " +
-                        format_number(spec.domain_min) + ":" + format_number(spec.domain_max));
+        // Every parameter the axis evaluates, clamps applied, lies in the domain.
+        if (a.lowest() < spec.domain_min || a.highest() > spec.domain_max)
+            throw Error("table '" + def.id + "': axis '" + a.name + "' range " + format_number(a.min) + ":" +
+                        format_number(a.max) + (a.has_clamp() ? " (clamped to " + format_number(a.clamp_lo) + ":" +
+                                                                    format_number(a.clamp_hi) + ")"
+                                                              : std::string()) +
+                        " is outside the model's domain; allowed: within " + format_number(spec.domain_min) + ":" +
+                        format_number(spec.domain_max));
         texels *= a.count;
     }
+    for (const auto& sum : s.channel_map)
+        for (int c : sum)
+            if (c < 0 || c >= static_cast<int>(def.channels.size()))
+                throw Error("table '" + def.id + "' has " + std::to_string(def.channels.size()) +
+                            " channel(s); the channel map names channel " + std::to_string(c + 1));
+    if (s.channel_map.size() > 4)
+        throw Error("a channel map of " + std::to_string(s.channel_map.size()) +
+                    " channels is too long; allowed: at most 4 (R, G, B, A)");
     if (texels > kMaxTexels)
         throw Error("table '" + def.id + "': " + std::to_string(texels) +
                     " texels is too many; allowed: at most " + std::to_string(kMaxTexels));

@@ -3,11 +3,75 @@
 #include <Imath/half.h>
 
 #include <cmath>
+#include <cstring>
+#include <sstream>
 
 #include "brdflut/error.h"
 #include "brdflut/version.h"
 
 namespace brdflut {
+
+namespace {
+constexpr const char* kLetters = "RGBA";
+
+int letter_index(char c) {
+    const char* p = std::strchr(kLetters, c);
+    return (p && c) ? static_cast<int>(p - kLetters) : -1;
+}
+}  // namespace
+
+nlohmann::json number_to_json(double v) {
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    return v;
+}
+
+double number_from_json(const nlohmann::json& j) {
+    if (j.is_string()) {
+        const std::string s = j.get<std::string>();
+        if (s == "inf") return HUGE_VAL;
+        if (s == "-inf") return -HUGE_VAL;
+        throw RuntimeError("'" + s + "' is not a number (allowed: a number, \"inf\" or \"-inf\")");
+    }
+    return j.get<double>();
+}
+
+std::string channel_map_to_string(const std::vector<std::vector<int>>& map) {
+    std::string out;
+    for (std::size_t c = 0; c < map.size(); ++c) {
+        out += (c ? "," : "") + std::string(1, kLetters[c]) + "=";
+        for (std::size_t i = 0; i < map[c].size(); ++i)
+            out += (i ? "+" : "") + std::string(1, kLetters[map[c][i]]);
+    }
+    return out;
+}
+
+std::vector<std::vector<int>> parse_channel_map(const std::string& spec, int table_channels) {
+    std::vector<std::vector<int>> map;
+    std::stringstream ss(spec);
+    std::string item;
+    const std::string allowed = std::string(kLetters).substr(0, static_cast<std::size_t>(table_channels));
+    while (std::getline(ss, item, ',')) {
+        const std::size_t eq = item.find('=');
+        auto bad = [&](const std::string& why) {
+            return Error("--channels item '" + item + "' " + why + "; expected FILE=TABLE[+TABLE], e.g. R=G,G=R+G, "
+                         "with table channels from " + allowed);
+        };
+        if (eq != 1 || letter_index(item[0]) < 0) throw bad("must start with a file channel R, G, B or A");
+        const std::size_t file_c = static_cast<std::size_t>(letter_index(item[0]));
+        if (file_c != map.size()) throw bad("is out of order: list the file channels from R");
+        std::vector<int> sum;
+        for (std::size_t i = 2; i < item.size(); ++i) {
+            if (item[i] == '+') continue;
+            const int t = letter_index(item[i]);
+            if (t < 0 || t >= table_channels) throw bad("names a table channel that does not exist");
+            sum.push_back(t);
+        }
+        if (sum.empty()) throw bad("names no table channel");
+        map.push_back(sum);
+    }
+    if (map.empty()) throw Error("--channels '" + spec + "' is empty");
+    return map;
+}
 
 std::string_view to_string(Method m) { return m == Method::quadrature ? "quadrature" : "mc"; }
 
@@ -99,14 +163,18 @@ nlohmann::json metadata_json(const Table& t, Storage s) {
     j["options"] = t.options;
     nlohmann::json axes = nlohmann::json::array();
     for (const Axis& a : t.axes) {
-        axes.push_back({{"name", a.name},
-                        {"min", a.min},
-                        {"max", a.max},
-                        {"count", a.count},
-                        {"placement", to_string(a.placement)},
-                        {"warp", to_string(a.warp)}});
+        nlohmann::json ax = {{"name", a.name},
+                             {"min", number_to_json(a.min)},
+                             {"max", number_to_json(a.max)},
+                             {"count", a.count},
+                             {"placement", to_string(a.placement)},
+                             {"warp", to_string(a.warp)}};
+        if (a.flip) ax["flip"] = true;
+        if (a.has_clamp()) ax["clamp"] = {number_to_json(a.clamp_lo), number_to_json(a.clamp_hi)};
+        axes.push_back(ax);
     }
     j["axes"] = axes;
+    if (!t.channel_map.empty()) j["channel_map"] = channel_map_to_string(t.channel_map);
     j["layout"] = t.axes.size() > 2
                       ? "x: axis 0 along the row; rows: axis 1; axis 2 slices stacked "
                         "vertically (row = z * count_y + y)"
@@ -127,16 +195,25 @@ std::vector<Axis> axes_from_json(const nlohmann::json& axes) {
         try {
             Axis ax;
             ax.name = a.at("name").get<std::string>();
-            ax.min = a.at("min").get<double>();
-            ax.max = a.at("max").get<double>();
+            ax.min = number_from_json(a.at("min"));
+            ax.max = number_from_json(a.at("max"));
             ax.count = a.at("count").get<int>();
             ax.placement = placement_from_string(a.at("placement").get<std::string>());
             ax.warp = warp_from_string(a.at("warp").get<std::string>());
+            if (a.contains("flip")) ax.flip = a.at("flip").get<bool>();
+            if (a.contains("clamp")) {
+                const auto& c = a.at("clamp");
+                if (!c.is_array() || c.size() != 2) throw RuntimeError("'clamp' must be [lo, hi]");
+                ax.clamp_lo = number_from_json(c.at(0));
+                ax.clamp_hi = number_from_json(c.at(1));
+            }
             ax.validate();
             out.push_back(ax);
         } catch (const nlohmann::json::exception& e) {
             throw RuntimeError(std::string("metadata axis is malformed: ") + e.what());
         } catch (const Error& e) {
+            throw RuntimeError(std::string("metadata axis is malformed: ") + e.what());
+        } catch (const RuntimeError& e) {
             throw RuntimeError(std::string("metadata axis is malformed: ") + e.what());
         }
     }

@@ -71,7 +71,9 @@ TEST(Compare, ABrdflutFileMatchesWithinItsErrorBound) {
     write_exr(dir / "t.exr", t, PixelType::float32);
     const ExrImage img = read_exr(dir / "t.exr");
     const LutDescription d = describe_from_metadata(img, dir / "t.exr");
-    const CompareReport rep = compare_lut(img, d, 0, 5);
+    const CompareReport rep = compare_lut(img, d, 0, 5, default_tolerance(img));
+    EXPECT_TRUE(rep.pass());
+    EXPECT_EQ(rep.failed_values, 0u);
     ASSERT_EQ(rep.channels.size(), 2u);
     const double bound = img.metadata.at("error_bound").get<double>();
     for (const auto& c : rep.channels) {
@@ -92,15 +94,20 @@ TEST(Compare, CatchesAnAxisShiftedByHalfATexelAndAFlippedAxis) {
     d.def = &find_table("ggx_albedo");
     d.settings = default_settings(*d.def);
     for (Axis& a : d.settings.axes) a.count = 16;
-    d.channel_map = {{0}};
-    d.flip = {false, false};
-    EXPECT_GT(compare_lut(img, d, 0, 1).channels[0].max_abs, 1e-3);
+    const Tolerance tol = parse_tolerance("1e-6");
+    const CompareReport shifted = compare_lut(img, d, 0, 1, tol);
+    EXPECT_GT(shifted.channels[0].max_abs, 1e-3);
+    EXPECT_FALSE(shifted.pass());
     // Described correctly it matches; flipped it does not.
     for (Axis& a : d.settings.axes) a.placement = Placement::endpoints;
-    EXPECT_LT(compare_lut(img, d, 0, 1).channels[0].max_abs, 1e-6);
-    d.flip = {false, true};
-    const CompareReport flipped = compare_lut(img, d, 0, 1);
+    const CompareReport right = compare_lut(img, d, 0, 1, tol);
+    EXPECT_LT(right.channels[0].max_abs, 1e-6);
+    EXPECT_TRUE(right.pass());
+    d.settings.axes[1].flip = true;
+    const CompareReport flipped = compare_lut(img, d, 0, 1, tol);
     EXPECT_GT(flipped.channels[0].max_abs, 1e-2);
+    EXPECT_FALSE(flipped.pass());
+    EXPECT_GT(flipped.failed_values, 100u);
 }
 
 TEST(Compare, ChannelMapSumsTableChannels) {

@@ -30,7 +30,7 @@ TEST(CliMatrix, BadInputGivesAOneLineErrorNamingTheValueAndWhatIsAllowed) {
         {"generate ggx_dfg --size 8x" + o, 2, {"--size '8x'"}},
         {"generate ggx_dfg --count alpha=0" + o, 2, {"--count alpha=0", "1 to 16384"}},
         {"generate ggx_dfg --count alpha=2.5" + o, 2, {"--count alpha=2.5"}},
-        {"generate ggx_dfg --range alpha=0.5:0.5" + o, 2, {"0.5:0.5", "min must be below max"}},
+        {"generate ggx_dfg --range alpha=0.5:0.5" + o, 2, {"0.5:0.5", "min and max must differ"}},
         {"generate ggx_dfg --range alpha=-0.1:1" + o, 2, {"-0.1:1", "allowed: within 0:1"}},
         {"generate ggx_dfg --range alpha=a:b" + o, 2, {"'a' is not a finite number"}},
         {"generate ggx_dfg --range alpha=0.1" + o, 2, {"expected AXIS=MIN:MAX"}},

@@ -1,41 +1,85 @@
-// Table axes: how texel index i maps to a parameter value.
+// Table axes: how the storage position i of a texel along an axis maps to
+// the parameter value the model is evaluated at. Every tool that reads or
+// writes a table (generate, compare, identify, sample, the shader writers)
+// goes through these functions, so one description means the same thing
+// everywhere.
 //
-//   placement  center     u = (i + 0.5) / count
-//              endpoints  u = i / (count - 1)        (count >= 2)
-//   warp       linear     value = min + (max - min) u
-//              square     value = min + (max - min) u^2
-//              sqrt       value = min + (max - min) sqrt(u)
-//              log        value = min (max / min)^u  (0 < min < max)
+//   flip       j = count - 1 - i when the axis is stored in reverse, else j = i
+//   placement  center     u = (j + 0.5) / count
+//              endpoints  u = j / (count - 1)        (count >= 2)
+//   warp       value = W(u; min, max), one entry of the warp registry below;
+//              min > max is allowed (a decreasing axis)
+//   clamp      parameter = clamp(value, clamp_lo, clamp_hi)
+//
+// The inverse, used to sample a table at a parameter p:
+//   u = W^-1(clamp(p)), position = u count - 0.5 (center) or u (count - 1)
+//   (endpoints), reversed when flipped; texel i's centre is at position i,
+//   and the texture coordinate of a GPU sampler is (position + 0.5) / count.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace brdflut {
 
 enum class Placement { center, endpoints };
-enum class Warp { linear, square, sqrt, log };
-
 std::string_view to_string(Placement p);
-std::string_view to_string(Warp w);
 Placement placement_from_string(std::string_view s);  // throws brdflut::Error
-Warp warp_from_string(std::string_view s);            // throws brdflut::Error
+
+// How the normalized coordinate u in [0, 1] maps to a parameter value. Each
+// warp is one entry of warps(): to add a mapping, add an enumerator here and
+// its entry in src/axis.cpp.
+enum class Warp { linear, square, sqrt, log, ior_z };
+
+struct WarpDef {
+    Warp warp;
+    const char* name;
+    const char* formula;  // value as a function of u, min and max
+    const char* used_by;  // engines that lay out an axis this way
+    double (*value)(double u, double min, double max);
+    double (*u_of_value)(double v, double min, double max);  // the inverse
+    // Empty when min and max are a valid range for the warp, else why not.
+    std::string (*range_problem)(double min, double max);
+    // The inverse as one expression valid in GLSL and HLSL alike, of `v`
+    // (the clamped parameter, a float), `lo` (min) and `hi` (max).
+    const char* shader_u;
+};
+
+const std::vector<WarpDef>& warps();
+const WarpDef& warp_def(Warp w);
+std::string_view to_string(Warp w);
+Warp warp_from_string(std::string_view s);  // throws brdflut::Error listing the warps
 
 struct Axis {
     std::string name;  // from the vocabulary in README.md: cos_theta, alpha, ...
-    double min = 0.0;
-    double max = 1.0;
+    double min = 0.0;  // parameter at u = 0
+    double max = 1.0;  // parameter at u = 1 (below min for a decreasing axis)
     int count = 1;
     Placement placement = Placement::center;
     Warp warp = Warp::linear;
+    bool flip = false;  // stored in reverse: position i holds grid index count - 1 - i
+    double clamp_lo = -std::numeric_limits<double>::infinity();
+    double clamp_hi = std::numeric_limits<double>::infinity();
 
-    double u(int i) const;       // normalized coordinate of index i
-    double value(int i) const;   // parameter value of index i
-    double value_at_u(double u) const;
-    double u_of_value(double v) const;  // inverse of value_at_u
+    double u(int i) const;              // normalized coordinate of storage position i
+    double value(int i) const;          // parameter of storage position i (clamped)
+    double value_at_u(double u) const;  // the warp alone, exact at u = 0 and 1
+    double clamped(double v) const;     // v clamped to [clamp_lo, clamp_hi]
+    double u_of_value(double v) const;  // inverse of value_at_u, of the clamped v
+    // Continuous storage position of a parameter (texel i's centre is at i),
+    // not clamped to the grid.
+    double position_of_value(double v) const;
+    bool has_clamp() const;
+    // The smallest and largest parameter the axis evaluates, over all of
+    // [0, 1] (clamps applied).
+    double lowest() const;
+    double highest() const;
 
-    // Throws brdflut::Error when the axis is not well formed (count < 1,
-    // endpoints with count < 2, min >= max, log with min <= 0, non-finite).
+    // Throws brdflut::Error when the axis is not well formed (count out of
+    // range, endpoints with count < 2, an empty or invalid range for the
+    // warp, clamps that are reversed, a parameter that is not finite).
     void validate() const;
 };
 

@@ -85,6 +85,11 @@ std::vector<const TableDefinition*> preset_tables(const std::string& name);
 // The defaults of a table: its axes and the default of every option.
 TableSettings default_settings(const TableDefinition& def);
 
+// For each axis of the settings (storage order), the index of the same axis
+// in the definition; throws brdflut::Error unless the settings' axes are an
+// order of the definition's axes.
+std::vector<int> definition_axis_order(const TableDefinition& def, const TableSettings& s);
+
 // Checks axis names, counts, ranges against the domain, and option values;
 // throws brdflut::Error naming the option, the value and what is allowed.
 void validate_settings(const TableDefinition& def, const TableSettings& s);

@@ -12,24 +12,18 @@
 
 namespace brdflut {
 
-// How a file's texels and channels relate to a catalogue table.
+// How a file's texels and channels relate to a catalogue table: the table
+// and the settings whose generated table has the file's layout (axes in
+// storage order with their placement, warp, flip and clamps, and the
+// channel map).
 struct LutDescription {
     const TableDefinition* def = nullptr;
-    TableSettings settings;  // the axes of the file's grid and the model options
-    // For each file channel, the table channels whose sum it holds
-    // (identity by default: file channel c holds table channel c).
-    std::vector<std::vector<int>> channel_map;
-    // flip[a]: index i of axis a is stored at position count - 1 - i.
-    std::vector<bool> flip;
+    TableSettings settings;
 };
 
 // Understands a brdflut file from its metadata. Throws RuntimeError when the
 // file has no brdflut metadata or it does not describe a known table.
 LutDescription describe_from_metadata(const ExrImage& img, const std::string& path);
-
-// Parses "R=G,G=R+G" (file channel = sum of table channels, both as letters
-// R, G, B, A) into a channel map; throws Error naming the bad item.
-std::vector<std::vector<int>> parse_channel_map(const std::string& spec, int table_channels);
 
 // Throws RuntimeError when the image's size or channels do not fit.
 void check_fits(const ExrImage& img, const LutDescription& d, const std::string& path);
@@ -41,20 +35,50 @@ struct ChannelError {
 };
 
 struct TexelError {
-    std::size_t texel;            // linear index in table order
-    std::vector<double> params;   // axis values
+    std::size_t texel;            // linear index in storage order
+    std::vector<double> params;   // axis values (storage order)
     std::string channel;
     double stored, exact, error;  // error = stored - exact
 };
 
+// What a stored value may differ from the exact one by: abs + rel |exact|
+// + steps storage steps at the exact value (one step: the spacing of the
+// stored type there, e.g. 2^-23 |v| for float, 1/65535 for unorm16), plus
+// the estimated error of the exact value itself.
+struct Tolerance {
+    double abs = 0.0;
+    double rel = 0.0;
+    double steps = 0.0;
+    std::string source;  // how it was chosen, for the report
+};
+
+// Parses --tolerance: "X" (absolute) or "X%" (relative to the exact value);
+// throws Error naming the value and the allowed forms.
+Tolerance parse_tolerance(const std::string& s);
+// The default: a brdflut file's claimed error_bound; for a foreign file one
+// storage step of its pixel type.
+Tolerance default_tolerance(const ExrImage& img);
+// The spacing of the stored type of img at value v.
+double storage_step(const ExrImage& img, double v);
+
 struct CompareReport {
     std::vector<ChannelError> channels;
     std::vector<TexelError> worst;        // largest |error| first
-    std::vector<double> max_error_map;    // per texel (table order), largest |error| over channels
+    std::vector<double> max_error_map;    // per texel (storage order), largest |error| over channels
     double exact_error_bound = 0.0;       // estimated error of the exact values themselves
+    Tolerance tolerance;
+    std::size_t failed_values = 0;        // stored values outside the tolerance
+    std::vector<TexelError> first_failures;  // the worst values outside it (up to worst_count)
+    bool pass() const { return failed_values == 0; }
 };
 
-CompareReport compare_lut(const ExrImage& img, const LutDescription& d, int threads, std::size_t worst_count);
+CompareReport compare_lut(const ExrImage& img, const LutDescription& d, int threads, std::size_t worst_count,
+                          const Tolerance& tolerance);
+
+// The file's values against an exact table of the same layout (storage
+// order, channel c of the file against channel c of the table).
+CompareReport compare_values(const ExrImage& img, const Table& exact, std::size_t worst_count,
+                             const Tolerance& tolerance);
 
 struct ChannelStats {
     std::string channel;
@@ -63,8 +87,10 @@ struct ChannelStats {
 };
 std::vector<ChannelStats> channel_stats(const ExrImage& img);
 
-// The value of one file channel at a parameter point, interpolated as a GPU
-// does with bilinear filtering and clamp-to-edge addressing (1-D: linear).
+// The value of one file channel at a parameter point (one value per axis, in
+// storage order), interpolated as a GPU does with linear filtering and
+// clamp-to-edge addressing: linear, bilinear or trilinear. The texture
+// coordinate of each axis is (Axis::position_of_value(p) + 0.5) / count.
 double sample_lut(const ExrImage& img, const LutDescription& d, const std::vector<double>& params,
                   int file_channel);
 

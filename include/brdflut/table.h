@@ -28,22 +28,35 @@ Quality quality_from_string(std::string_view s);  // throws brdflut::Error
 
 // What a user may change about a table. Start from default_settings(def).
 struct TableSettings {
-    std::vector<Axis> axes;                     // x, y[, z]
+    // The axes in storage order (x, y[, z]): any order of the table's axes,
+    // matched by name (a transposed table lists them the other way round).
+    std::vector<Axis> axes;
     std::map<std::string, std::string> params;  // model options, e.g. visibility
     Method method = Method::quadrature;
     Quality quality = Quality::standard;        // quadrature only
     long long samples = 4096;                   // per texel, Monte Carlo only
     std::uint64_t seed = 1;                     // Monte Carlo only
+    // Stored channel c holds the sum of the table channels channel_map[c]
+    // (e.g. {{0, 1}} stores A + B alone); empty: channel c holds channel c.
+    std::vector<std::vector<int>> channel_map;
 };
+
+// "R+G,B" style names of a channel map (table channels as letters R, G, B, A).
+std::string channel_map_to_string(const std::vector<std::vector<int>>& map);
+// Parses "R=G,G=R+G" (file channel = sum of table channels, both as letters);
+// throws Error naming the bad item.
+std::vector<std::vector<int>> parse_channel_map(const std::string& spec, int table_channels);
 
 struct Table {
     std::string id;
-    std::vector<Axis> axes;
-    std::vector<std::string> channels;  // meaning of R, G, B, A in order (1 to 4)
+    std::vector<Axis> axes;             // in storage order, as TableSettings::axes
+    std::vector<std::string> channels;  // meaning of R, G, B, A in order (1 to 4), as stored
+    std::vector<std::vector<int>> channel_map;  // as TableSettings::channel_map
     nlohmann::json model;               // every parameter that changes the values
     nlohmann::json method;              // integration rule and its settings
     std::map<std::string, std::string> options;  // the model options it was made with
-    // Texel values, x fastest, then y, then z; channels interleaved.
+    // Texel values in storage order, x fastest, then y, then z; channels
+    // interleaved.
     std::vector<double> values;
     // Estimated absolute integration error of each value (same layout).
     std::vector<double> errors;
@@ -81,6 +94,10 @@ double error_bound(const Table& t, Storage s);
 // its `pixel` names the storage and its `error_bound` includes the rounding.
 nlohmann::json metadata_json(const Table& t, PixelType p);
 nlohmann::json metadata_json(const Table& t, Storage s);
+
+// A number in metadata JSON: infinite values (an open IOR axis) as "inf".
+nlohmann::json number_to_json(double v);
+double number_from_json(const nlohmann::json& j);  // throws RuntimeError
 
 // Rebuilds axes from metadata; throws brdflut::RuntimeError on malformed input.
 std::vector<Axis> axes_from_json(const nlohmann::json& axes);

@@ -2,35 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
-#include <cstring>
 
 #include "brdflut/error.h"
 #include "brdflut/generate.h"
 
 namespace brdflut {
-namespace {
-constexpr const char* kLetters = "RGBA";
-
-int letter_index(char c) {
-    const char* p = std::strchr(kLetters, c);
-    return (p && c) ? static_cast<int>(p - kLetters) : -1;
-}
-
-// Position in the image (pixel offset) of a texel given per axis indices.
-std::size_t pixel_of(const LutDescription& d, const std::vector<int>& idx) {
-    const auto& axes = d.settings.axes;
-    std::vector<int> pos(idx);
-    for (std::size_t a = 0; a < axes.size(); ++a)
-        if (a < d.flip.size() && d.flip[a]) pos[a] = axes[a].count - 1 - idx[a];
-    std::size_t p = 0, stride = 1;
-    for (std::size_t a = 0; a < axes.size(); ++a) {
-        p += static_cast<std::size_t>(pos[a]) * stride;
-        stride *= static_cast<std::size_t>(axes[a].count);
-    }
-    return p;
-}
-}  // namespace
 
 LutDescription describe_from_metadata(const ExrImage& img, const std::string& path) {
     if (!img.has_metadata)
@@ -49,111 +25,162 @@ LutDescription describe_from_metadata(const ExrImage& img, const std::string& pa
         d.settings.axes = axes_from_json(m.at("axes"));
         if (m.contains("options"))
             for (const auto& [k, v] : m.at("options").items()) d.settings.params[k] = v.get<std::string>();
+        if (m.contains("channel_map"))
+            d.settings.channel_map = parse_channel_map(m.at("channel_map").get<std::string>(),
+                                                       static_cast<int>(d.def->channels.size()));
         validate_settings(*d.def, d.settings);
     } catch (const nlohmann::json::exception& e) {
         throw RuntimeError("'" + path + "': metadata is malformed: " + e.what());
     } catch (const Error& e) {
         throw RuntimeError("'" + path + "': metadata does not describe a valid table: " + e.what());
     }
-    for (int c = 0; c < static_cast<int>(d.def->channels.size()); ++c) d.channel_map.push_back({c});
-    d.flip.assign(d.settings.axes.size(), false);
     return d;
 }
 
-std::vector<std::vector<int>> parse_channel_map(const std::string& spec, int table_channels) {
-    std::vector<std::vector<int>> map;
-    std::stringstream ss(spec);
-    std::string item;
-    const std::string allowed = std::string(kLetters).substr(0, static_cast<std::size_t>(table_channels));
-    while (std::getline(ss, item, ',')) {
-        const std::size_t eq = item.find('=');
-        auto bad = [&](const std::string& why) {
-            return Error("--channels item '" + item + "' " + why + "; expected FILE=TABLE[+TABLE], e.g. R=G,G=R+G, "
-                         "with table channels from " + allowed);
-        };
-        if (eq != 1 || letter_index(item[0]) < 0) throw bad("must start with a file channel R, G, B or A");
-        const std::size_t file_c = static_cast<std::size_t>(letter_index(item[0]));
-        if (file_c != map.size()) throw bad("is out of order: list the file channels from R");
-        std::vector<int> sum;
-        for (std::size_t i = 2; i < item.size(); ++i) {
-            if (item[i] == '+') continue;
-            const int t = letter_index(item[i]);
-            if (t < 0 || t >= table_channels) throw bad("names a table channel that does not exist");
-            sum.push_back(t);
-        }
-        if (sum.empty()) throw bad("names no table channel");
-        map.push_back(sum);
-    }
-    if (map.empty()) throw Error("--channels '" + spec + "' is empty");
-    return map;
+namespace {
+// Largest |error| first (non-finite errors as the largest), then by texel.
+bool by_error(const TexelError& x, const TexelError& y) {
+    const double ex = std::isfinite(x.error) ? std::abs(x.error) : HUGE_VAL;
+    const double ey = std::isfinite(y.error) ? std::abs(y.error) : HUGE_VAL;
+    if (ex != ey) return ex > ey;
+    return x.texel < y.texel;
 }
+
+int stored_channel_count(const LutDescription& d) {
+    return static_cast<int>(d.settings.channel_map.empty() ? d.def->channels.size() : d.settings.channel_map.size());
+}
+}  // namespace
 
 void check_fits(const ExrImage& img, const LutDescription& d, const std::string& path) {
     const auto& axes = d.settings.axes;
     const int w = axes[0].count;
-    int h = axes.size() > 1 ? axes[1].count : 1;
+    long long h = axes.size() > 1 ? axes[1].count : 1;
     if (axes.size() > 2) h *= axes[2].count;
     if (img.width != w || img.height != h)
         throw RuntimeError("'" + path + "' is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
                            " but the table described is " + std::to_string(w) + "x" + std::to_string(h));
-    if (d.channel_map.size() > img.channel_names.size())
+    const std::size_t need = static_cast<std::size_t>(stored_channel_count(d));
+    if (need > img.channel_names.size())
         throw RuntimeError("'" + path + "' has " + std::to_string(img.channel_names.size()) +
-                           " channel(s) but the description needs " + std::to_string(d.channel_map.size()));
+                           " channel(s) but the description needs " + std::to_string(need));
 }
 
-CompareReport compare_lut(const ExrImage& img, const LutDescription& d, int threads, std::size_t worst_count) {
-    GenerateOptions opt;
-    opt.threads = threads;
-    const Table exact = generate(*d.def, d.settings, opt);
+Tolerance parse_tolerance(const std::string& s) {
+    Tolerance t;
+    const bool relative = !s.empty() && s.back() == '%';
+    const std::string number = relative ? s.substr(0, s.size() - 1) : s;
+    std::size_t used = 0;
+    double v = -1;
+    try {
+        v = std::stod(number, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (number.empty() || used != number.size() || !std::isfinite(v) || v < 0)
+        throw Error("--tolerance '" + s + "' is not valid; allowed: a number >= 0 (absolute, e.g. 1e-4) or a "
+                    "percentage of the exact value (e.g. 0.1%)");
+    if (relative) t.rel = v / 100.0;
+    else t.abs = v;
+    t.source = "--tolerance " + s;
+    return t;
+}
+
+double storage_step(const ExrImage& img, double v) {
+    if (img.unorm16) return 1.0 / 65535.0;
+    const double a = std::abs(v);
+    // The spacing of the float type around v (the smallest normal's below it).
+    const int mantissa = img.pixel == PixelType::half ? 10 : 23;
+    const int min_exp = img.pixel == PixelType::half ? -14 : -126;
+    const int e = a > 0 ? std::max(std::ilogb(a), min_exp) : min_exp;
+    return std::ldexp(1.0, e - mantissa);
+}
+
+Tolerance default_tolerance(const ExrImage& img) {
+    Tolerance t;
+    if (img.has_metadata && img.metadata.is_object() && img.metadata.contains("error_bound") &&
+        img.metadata["error_bound"].is_number()) {
+        t.abs = img.metadata["error_bound"].get<double>();
+        t.source = "the file's error_bound";
+        return t;
+    }
+    t.steps = 1.0;
+    t.source = "one storage step of the file's " +
+               std::string(img.unorm16 ? "unorm16" : std::string(to_string(img.pixel))) + " values";
+    return t;
+}
+
+CompareReport compare_values(const ExrImage& img, const Table& exact, std::size_t worst_count,
+                             const Tolerance& tolerance) {
     CompareReport rep;
+    rep.tolerance = tolerance;
     rep.exact_error_bound = error_bound(exact, PixelType::float32);
     const std::size_t nfile = img.channel_names.size();
+    const std::size_t nc = exact.channels.size();
     const std::size_t texels = exact.texel_count();
     rep.max_error_map.assign(texels, 0.0);
-    std::vector<double> sum_sq(d.channel_map.size(), 0.0);
-    rep.channels.resize(d.channel_map.size());
-    for (std::size_t c = 0; c < d.channel_map.size(); ++c) rep.channels[c].channel = img.channel_names[c];
-    std::vector<TexelError> all;
-    for (std::size_t k = 0; k < texels; ++k) {
-        std::vector<int> idx;
-        std::vector<double> params;
+    std::vector<double> sum_sq(nc, 0.0);
+    rep.channels.resize(nc);
+    for (std::size_t c = 0; c < nc; ++c) rep.channels[c].channel = img.channel_names[c];
+    std::vector<TexelError> all, failures;
+    auto texel_error = [&](std::size_t k, std::size_t c, double stored, double want, double err) {
+        TexelError te{k, {}, img.channel_names[c], stored, want, err};
         std::size_t rest = k;
-        for (const Axis& a : d.settings.axes) {
+        for (const Axis& a : exact.axes) {
             const int i = static_cast<int>(rest % static_cast<std::size_t>(a.count));
             rest /= static_cast<std::size_t>(a.count);
-            idx.push_back(i);
-            params.push_back(a.value(i));
+            te.params.push_back(a.value(i));
         }
-        const std::size_t p = pixel_of(d, idx);
-        for (std::size_t c = 0; c < d.channel_map.size(); ++c) {
-            double want = 0.0;
-            for (int t : d.channel_map[c]) want += exact.at(k, t);
-            const double stored = img.pixels[p * nfile + c];
+        return te;
+    };
+    for (std::size_t k = 0; k < texels; ++k) {
+        for (std::size_t c = 0; c < nc; ++c) {
+            const double want = exact.values[k * nc + c];
+            const double stored = img.pixels[k * nfile + c];
             const double err = stored - want;
             const double a = std::isfinite(err) ? std::abs(err) : HUGE_VAL;
             ChannelError& ce = rep.channels[c];
             ce.max_abs = std::max(ce.max_abs, a);
             sum_sq[c] += std::isfinite(err) ? err * err : HUGE_VAL;
             rep.max_error_map[k] = std::max(rep.max_error_map[k], a);
-            all.push_back({k, params, img.channel_names[c], stored, want, err});
+            const double allowed = tolerance.abs + tolerance.rel * std::abs(want) +
+                                   tolerance.steps * storage_step(img, want) + exact.errors[k * nc + c];
+            const bool fails = !(a <= allowed);
+            if (fails) ++rep.failed_values;
+            // Keep only what can still be among the worst (bounded memory).
+            if (worst_count > 0) {
+                all.push_back(texel_error(k, c, stored, want, err));
+                if (fails) failures.push_back(all.back());
+            }
+        }
+        if (all.size() > 4 * worst_count + 64) {
+            for (auto* v : {&all, &failures}) {
+                if (v->size() <= worst_count) continue;
+                std::nth_element(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(worst_count), v->end(), by_error);
+                v->resize(worst_count);
+            }
         }
     }
-    for (std::size_t c = 0; c < rep.channels.size(); ++c)
-        rep.channels[c].rms = std::sqrt(sum_sq[c] / static_cast<double>(texels));
-    const std::size_t n = std::min(worst_count, all.size());
-    std::partial_sort(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(n), all.end(),
-                      [](const TexelError& a, const TexelError& b) {
-                          const double ea = std::isfinite(a.error) ? std::abs(a.error) : HUGE_VAL;
-                          const double eb = std::isfinite(b.error) ? std::abs(b.error) : HUGE_VAL;
-                          if (ea != eb) return ea > eb;
-                          return a.texel < b.texel;
-                      });
-    all.resize(n);
+    for (std::size_t c = 0; c < nc; ++c) rep.channels[c].rms = std::sqrt(sum_sq[c] / static_cast<double>(texels));
+    for (auto* v : {&all, &failures}) {
+        const std::size_t n = std::min(worst_count, v->size());
+        std::partial_sort(v->begin(), v->begin() + static_cast<std::ptrdiff_t>(n), v->end(), by_error);
+        v->resize(n);
+    }
     rep.worst = std::move(all);
+    rep.first_failures = std::move(failures);
     return rep;
 }
 
+CompareReport compare_lut(const ExrImage& img, const LutDescription& d, int threads, std::size_t worst_count,
+                          const Tolerance& tolerance) {
+    GenerateOptions opt;
+    opt.threads = threads;
+    const Table exact = generate(*d.def, d.settings, opt);
+    return compare_values(img, exact, worst_count, tolerance);
+}
+
 std::vector<ChannelStats> channel_stats(const ExrImage& img) {
+
     std::vector<ChannelStats> out;
     const std::size_t nc = img.channel_names.size();
     const std::size_t n = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height);
@@ -185,31 +212,40 @@ std::vector<ChannelStats> channel_stats(const ExrImage& img) {
 double sample_lut(const ExrImage& img, const LutDescription& d, const std::vector<double>& params,
                   int file_channel) {
     const auto& axes = d.settings.axes;
-    if (axes.size() > 2) throw Error("sampling 3-D tables is not supported");
     if (params.size() != axes.size())
         throw Error("expected " + std::to_string(axes.size()) + " parameter(s), got " + std::to_string(params.size()));
     const std::size_t nc = img.channel_names.size();
-    // Continuous texel coordinate along each axis: texel i's centre is at i.
-    std::vector<double> pos;
+    // Per axis: the two texels around the point and the weight of the second
+    // (clamp to edge: both are the edge texel outside the grid).
+    int lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    double f[3] = {0.0, 0.0, 0.0};
     for (std::size_t a = 0; a < axes.size(); ++a) {
         const Axis& ax = axes[a];
-        const double u = ax.u_of_value(params[a]);
-        double p = ax.placement == Placement::center ? u * ax.count - 0.5 : u * (ax.count - 1);
-        if (a < d.flip.size() && d.flip[a]) p = ax.count - 1 - p;
-        pos.push_back(std::clamp(std::isfinite(p) ? p : 0.0, 0.0, static_cast<double>(ax.count - 1)));
+        const double p = ax.position_of_value(params[a]);
+        const double c = std::clamp(std::isfinite(p) ? p : 0.0, 0.0, static_cast<double>(ax.count - 1));
+        lo[a] = static_cast<int>(std::floor(c));
+        hi[a] = std::min(lo[a] + 1, ax.count - 1);
+        f[a] = c - lo[a];
     }
-    auto at = [&](int x, int y) {
-        return img.pixels[(static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * nc +
-                          static_cast<std::size_t>(file_channel)];
+    const std::size_t w = static_cast<std::size_t>(axes[0].count);
+    const std::size_t h = axes.size() > 1 ? static_cast<std::size_t>(axes[1].count) : 1;
+    auto at = [&](int x, int y, int z) {
+        const std::size_t pixel = (static_cast<std::size_t>(z) * h + static_cast<std::size_t>(y)) * w +
+                                  static_cast<std::size_t>(x);
+        return img.pixels[pixel * nc + static_cast<std::size_t>(file_channel)];
     };
-    const int x0 = static_cast<int>(std::floor(pos[0]));
-    const int x1 = std::min(x0 + 1, axes[0].count - 1);
-    const double fx = pos[0] - x0;
-    if (axes.size() == 1) return (1 - fx) * at(x0, 0) + fx * at(x1, 0);
-    const int y0 = static_cast<int>(std::floor(pos[1]));
-    const int y1 = std::min(y0 + 1, axes[1].count - 1);
-    const double fy = pos[1] - y0;
-    return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+    double sum = 0.0;
+    for (int corner = 0; corner < (1 << axes.size()); ++corner) {
+        int idx[3] = {0, 0, 0};
+        double weight = 1.0;
+        for (std::size_t a = 0; a < axes.size(); ++a) {
+            const bool upper = (corner >> a) & 1;
+            idx[a] = upper ? hi[a] : lo[a];
+            weight *= upper ? f[a] : 1.0 - f[a];
+        }
+        if (weight != 0.0) sum += weight * at(idx[0], idx[1], idx[2]);
+    }
+    return sum;
 }
 
 }  // namespace brdflut

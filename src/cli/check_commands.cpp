@@ -26,7 +26,26 @@ std::string axis_line(const Axis& a) {
     std::ostringstream s;
     s << a.name << " [" << a.min << ", " << a.max << "] " << a.count << " " << to_string(a.placement) << " "
       << to_string(a.warp);
+    if (a.flip) s << " flipped";
+    if (a.has_clamp()) s << " clamped to [" << a.clamp_lo << ", " << a.clamp_hi << "]";
     return s.str();
+}
+
+std::string tolerance_text(const Tolerance& t) {
+    std::string out;
+    if (t.abs > 0 || (t.rel == 0 && t.steps == 0)) out += sci(t.abs);
+    if (t.rel > 0) out += (out.empty() ? "" : " + ") + sci(t.rel) + " |exact|";
+    if (t.steps > 0) out += (out.empty() ? "" : " + ") + std::string(t.steps == 1 ? "one storage step" : sci(t.steps) + " storage steps");
+    return out + " (" + t.source + "), plus the exact values' own error";
+}
+
+std::string verdict_line(const CompareReport& rep) {
+    const std::size_t values = rep.max_error_map.size() * rep.channels.size();
+    if (rep.pass())
+        return "PASS: every one of the " + std::to_string(values) + " values is within " + tolerance_text(rep.tolerance);
+    std::string line = "FAIL: " + std::to_string(rep.failed_values) + " of the " + std::to_string(values) +
+                       " values exceed " + tolerance_text(rep.tolerance);
+    return line;
 }
 
 struct Described {
@@ -39,9 +58,8 @@ Described describe(const DescribeArgs& a) {
     Described d;
     d.image = read_table_image(a.file);
     if (a.as.empty()) {
-        if (!a.table.size.empty() || !a.table.ranges.empty() || !a.table.counts.empty() ||
-            !a.table.placements.empty() || !a.table.warps.empty() || !a.table.params.empty())
-            throw Error("axis and model options describe a foreign file and need --as <table id>");
+        if (a.table.layout_given())
+            throw Error("axis, layout and model options describe a foreign file and need --as <table id>");
         d.lut = describe_from_metadata(d.image, a.file);
         d.from_metadata = true;
     } else {
@@ -62,21 +80,11 @@ Described describe(const DescribeArgs& a) {
         d.lut.def = &def;
         d.lut.settings = settings_for(def, t, used);
         check_all_used(t, used);
+        // Without --channels, the file's first channels hold the table's.
+        if (d.lut.settings.channel_map.empty() && d.image.channel_names.size() < def.channels.size())
+            for (std::size_t c = 0; c < d.image.channel_names.size(); ++c)
+                d.lut.settings.channel_map.push_back({static_cast<int>(c)});
         validate_settings(def, d.lut.settings);
-        const std::size_t n = std::min(def.channels.size(), d.image.channel_names.size());
-        for (std::size_t c = 0; c < n; ++c) d.lut.channel_map.push_back({static_cast<int>(c)});
-        d.lut.flip.assign(def.axes.size(), false);
-    }
-    if (!a.channels.empty())
-        d.lut.channel_map = parse_channel_map(a.channels, static_cast<int>(d.lut.def->channels.size()));
-    for (const std::string& name : a.flips) {
-        bool found = false;
-        for (std::size_t i = 0; i < d.lut.settings.axes.size(); ++i)
-            if (d.lut.settings.axes[i].name == name) {
-                d.lut.flip[i] = true;
-                found = true;
-            }
-        if (!found) throw Error("--flip '" + name + "': table '" + d.lut.def->id + "' has no axis of that name");
     }
     check_fits(d.image, d.lut, a.file);
     return d;
@@ -128,8 +136,10 @@ int run_verify(const VerifyArgs& a) {
 int run_compare(const CompareArgs& a) {
     if (a.worst < 0 || a.worst > 100000)
         throw Error("--worst " + std::to_string(a.worst) + " is out of range; allowed: 0 to 100000");
+    const Tolerance given = a.tolerance.empty() ? Tolerance{} : parse_tolerance(a.tolerance);
     const Described d = describe(a.describe);
-    const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst));
+    const Tolerance tol = a.tolerance.empty() ? default_tolerance(d.image) : given;
+    const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst), tol);
     const auto& axes = d.lut.settings.axes;
     if (!a.plot.empty()) {
         if (axes.size() > 2) throw Error("--plot: 3-D tables cannot be drawn as one heatmap");
@@ -159,8 +169,13 @@ int run_compare(const CompareArgs& a) {
         }
         j["worst"] = w;
         j["exact_error_bound"] = rep.exact_error_bound;
+        j["verdict"] = {{"pass", rep.pass()},
+                        {"tolerance", {{"abs", tol.abs}, {"rel", tol.rel}, {"storage_steps", tol.steps},
+                                       {"source", tol.source}}},
+                        {"failed_values", rep.failed_values},
+                        {"values", rep.max_error_map.size() * rep.channels.size()}};
         std::cout << j.dump(2) << "\n";
-        return 0;
+        return rep.pass() ? 0 : kExitFailure;
     }
     std::printf("file:  %s\ntable: %s (described by %s)\n", a.describe.file.c_str(), d.lut.def->id.c_str(),
                 d.from_metadata ? "its metadata" : "the command line");
@@ -179,7 +194,8 @@ int run_compare(const CompareArgs& a) {
                     t.exact, t.error);
     }
     std::printf("\n(the exact values themselves are within %s)\n", sci(rep.exact_error_bound).c_str());
-    return 0;
+    std::printf("\n%s\n", verdict_line(rep).c_str());
+    return rep.pass() ? 0 : kExitFailure;
 }
 
 int run_inspect(const std::string& file, bool json) {

@@ -36,9 +36,7 @@ int run_verify(const VerifyArgs& a);
 struct DescribeArgs {
     std::string file;
     std::string as;
-    std::string channels;            // --channels R=G,G=R+G
-    std::vector<std::string> flips;  // --flip AXIS
-    TableArgs table;
+    TableArgs table;  // axes, layout and model options of a foreign file
 };
 
 struct CompareArgs {
@@ -47,6 +45,7 @@ struct CompareArgs {
     int worst = 10;
     int threads = 0;
     std::string plot;
+    std::string tolerance;  // --tolerance X or X%; empty: the file's own default
 };
 int run_compare(const CompareArgs& a);
 

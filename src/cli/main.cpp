@@ -27,9 +27,6 @@ extern "C" void on_signal(int sig) {
 void add_describe_options(CLI::App& app, DescribeArgs& d) {
     app.add_option("file", d.file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
     app.add_option("--as", d.as, "Table id of a foreign file (one without brdflut metadata)");
-    app.add_option("--channels", d.channels,
-                   "What each file channel holds, as sums of the table's channels, e.g. R=G,G=R+G");
-    app.add_option("--flip", d.flips, "Axis stored in reverse order (repeatable)");
     add_table_options(app, d.table, false);
 }
 
@@ -117,6 +114,9 @@ int main(int argc, char** argv) {
     cmp->add_option("--worst", c.worst, "How many of the worst texels to list")->capture_default_str();
     cmp->add_option("--threads", c.threads, "Worker threads for the exact values; 0 uses every core");
     cmp->add_option("--plot", c.plot, "Write a PNG heatmap of log10 |stored - exact| to this file");
+    cmp->add_option("--tolerance", c.tolerance,
+                    "Largest allowed |stored - exact|: X (absolute) or X% (of the exact value); default: the "
+                    "file's error_bound, or one storage step of a foreign file's pixel type. Exit 1 when exceeded");
 
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;

@@ -1,6 +1,8 @@
 #include "cli/options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "brdflut/error.h"
 
@@ -11,7 +13,16 @@ void add_table_options(CLI::App& app, TableArgs& a, bool methods) {
     app.add_option("--range", a.ranges, "Axis range AXIS=MIN:MAX, e.g. alpha=0.01:1 (repeatable)");
     app.add_option("--count", a.counts, "Axis count AXIS=N (repeatable)");
     app.add_option("--placement", a.placements, "Axis placement AXIS=center|endpoints (repeatable)");
-    app.add_option("--warp", a.warps, "Axis warp AXIS=linear|square|sqrt|log (repeatable)");
+    std::string warp_names;
+    for (const WarpDef& w : warps()) warp_names += (warp_names.empty() ? "" : "|") + std::string(w.name);
+    app.add_option("--warp", a.warps, "Axis warp AXIS=" + warp_names + " (repeatable)");
+    app.add_option("--order", a.order,
+                   "Storage order of the axes, x first, e.g. alpha,cos_theta for a table with rows of cos_theta");
+    app.add_option("--flip", a.flips, "Axis stored in reverse order, AXIS (repeatable)");
+    app.add_option("--clamp", a.clamps,
+                   "Clamp an axis's parameter, AXIS=LO:HI, e.g. cos_theta=1e-4:1 (repeatable; inf allowed)");
+    app.add_option("--channels", a.channels,
+                   "What each stored channel holds, as sums of the table's channels, e.g. R=G,G=R+G");
     if (methods) {
         app.add_option("--method", a.method, "Integration: quadrature (deterministic) or mc (Monte Carlo)")
             ->capture_default_str();
@@ -62,6 +73,12 @@ std::vector<int> parse_size(const std::string& s) {
     return out;
 }
 
+double parse_limit(const std::string& option, const std::string& s) {
+    if (s == "inf" || s == "+inf") return HUGE_VAL;
+    if (s == "-inf") return -HUGE_VAL;
+    return parse_double(option, s);
+}
+
 std::pair<std::string, std::string> split_assignment(const std::string& option, const std::string& s) {
     const std::size_t eq = s.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == s.size())
@@ -85,6 +102,24 @@ double parse_double(const std::string& option, const std::string& s) {
 
 TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::set<std::string>& used) {
     TableSettings s = default_settings(def);
+    if (!a.order.empty()) {
+        // The storage order, by name, applies to the tables whose axes are
+        // exactly those it names.
+        std::vector<std::string> names;
+        std::stringstream ss(a.order);
+        for (std::string name; std::getline(ss, name, ',');) names.push_back(name);
+        std::vector<Axis> ordered;
+        for (const std::string& name : names) {
+            auto it = std::find_if(s.axes.begin(), s.axes.end(), [&](const Axis& ax) { return ax.name == name; });
+            if (it != s.axes.end() &&
+                std::none_of(ordered.begin(), ordered.end(), [&](const Axis& ax) { return ax.name == name; }))
+                ordered.push_back(*it);
+        }
+        if (ordered.size() == s.axes.size() && names.size() == s.axes.size()) {
+            s.axes = ordered;
+            used.insert("--order");
+        }
+    }
     if (!a.size.empty()) {
         const std::vector<int> n = parse_size(a.size);
         if (n.size() > def.axes.size())
@@ -109,8 +144,8 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
         if (colon == std::string::npos)
             throw Error("--range '" + r + "' is not valid; expected AXIS=MIN:MAX, e.g. --range eta=1:2.5");
         if (Axis* ax = axis_named("--range", name)) {
-            ax->min = parse_double("--range " + name, value.substr(0, colon));
-            ax->max = parse_double("--range " + name, value.substr(colon + 1));
+            ax->min = parse_limit("--range " + name, value.substr(0, colon));
+            ax->max = parse_limit("--range " + name, value.substr(colon + 1));
         }
     }
     for (const auto& c : a.counts) {
@@ -130,6 +165,23 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
     for (const auto& w : a.warps) {
         const auto [name, value] = split_assignment("--warp", w);
         if (Axis* ax = axis_named("--warp", name)) ax->warp = warp_from_string(value);
+    }
+    for (const auto& c : a.clamps) {
+        const auto [name, value] = split_assignment("--clamp", c);
+        const std::size_t colon = value.find(':');
+        if (colon == std::string::npos)
+            throw Error("--clamp '" + c + "' is not valid; expected AXIS=LO:HI, e.g. --clamp cos_theta=1e-4:1");
+        if (Axis* ax = axis_named("--clamp", name)) {
+            ax->clamp_lo = parse_limit("--clamp " + name, value.substr(0, colon));
+            ax->clamp_hi = parse_limit("--clamp " + name, value.substr(colon + 1));
+        }
+    }
+    for (const auto& name : a.flips) {
+        if (Axis* ax = axis_named("--flip", name)) ax->flip = true;
+    }
+    if (!a.channels.empty()) {
+        s.channel_map = parse_channel_map(a.channels, static_cast<int>(def.channels.size()));
+        used.insert("--channels");
     }
     for (const auto& [name, value] : a.params) {
         if (s.params.count(name)) {
@@ -156,6 +208,15 @@ void check_all_used(const TableArgs& a, const std::set<std::string>& used) {
     check("--count", a.counts);
     check("--placement", a.placements);
     check("--warp", a.warps);
+    check("--clamp", a.clamps);
+    for (const auto& name : a.flips)
+        if (!used.count("--flip " + name))
+            throw Error("--flip '" + name + "': no requested table has an axis named '" + name + "'");
+    if (!a.order.empty() && !used.count("--order"))
+        throw Error("--order '" + a.order +
+                    "' is not an order of any requested table's axes; allowed: each of the table's axes once, x first");
+    if (!a.channels.empty() && !used.count("--channels"))
+        throw Error("--channels does not apply to any requested table");
     for (const auto& [name, value] : a.params)
         if (!used.count("--" + name)) throw Error("--" + name + " does not apply to any requested table");
 }

@@ -19,6 +19,16 @@ inline constexpr int kExitUsage = 2;
 struct TableArgs {
     std::string size;  // "N" or "NxM"
     std::vector<std::string> ranges, counts, placements, warps;
+    // The layout: storage order of the axes, reversed axes, clamps of the
+    // parameter, and what each stored channel holds.
+    std::string order;                 // --order alpha,cos_theta
+    std::vector<std::string> flips;    // --flip AXIS
+    std::vector<std::string> clamps;   // --clamp AXIS=LO:HI
+    std::string channels;              // --channels R=G,G=R+G
+    bool layout_given() const {
+        return !size.empty() || !ranges.empty() || !counts.empty() || !placements.empty() || !warps.empty() ||
+               !order.empty() || !flips.empty() || !clamps.empty() || !channels.empty() || !params.empty();
+    }
     std::string method = "quadrature";
     std::string quality = "default";  // draft | default | reference
     long long samples = 4096;
@@ -27,7 +37,8 @@ struct TableArgs {
     std::map<std::string, std::string> params;         // those given on the command line
 };
 
-// Adds --size, --range, --count, --placement, --warp and a --<name> flag for
+// Adds --size, --range, --count, --placement, --warp, --order, --flip,
+// --clamp, --channels and a --<name> flag for
 // every model option of the catalogue. With methods, also --method,
 // --quality, --samples and --seed.
 void add_table_options(CLI::App& app, TableArgs& a, bool methods);
@@ -45,6 +56,8 @@ void check_all_used(const TableArgs& a, const std::set<std::string>& used);
 // "N", "NxM" or "NxMxK".
 std::vector<int> parse_size(const std::string& s);
 double parse_double(const std::string& option, const std::string& s);
+// As parse_double, also accepting "inf" and "-inf" (range and clamp limits).
+double parse_limit(const std::string& option, const std::string& s);
 std::pair<std::string, std::string> split_assignment(const std::string& option, const std::string& s);
 
 }  // namespace brdflut::cli

@@ -25,7 +25,16 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     Table t;
     t.id = def.id;
     t.axes = settings.axes;
-    t.channels = def.channels;
+    t.channel_map = settings.channel_map;
+    if (t.channel_map.empty()) {
+        t.channels = def.channels;
+    } else {
+        for (const auto& sum : t.channel_map) {
+            std::string meaning;
+            for (int c : sum) meaning += (meaning.empty() ? "" : " + ") + def.channels[static_cast<std::size_t>(c)];
+            t.channels.push_back(meaning);
+        }
+    }
     t.model = prepared.model;
     t.method = prepared.method;
     // Every deterministic table records the quality it was asked for (closed
@@ -37,30 +46,44 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     t.values.assign(texels * nc, 0.0);
     t.errors.assign(texels * nc, 0.0);
 
-    // Axis values of every index, computed once.
+    // Axis values of every storage position, computed once, and where each
+    // storage axis goes among the evaluator's coordinates (definition order).
     std::vector<std::vector<double>> axis_values;
     for (const Axis& a : t.axes) {
         std::vector<double> v(static_cast<std::size_t>(a.count));
         for (int i = 0; i < a.count; ++i) v[static_cast<std::size_t>(i)] = a.value(i);
         axis_values.push_back(std::move(v));
     }
+    const std::vector<int> order = definition_axis_order(def, settings);
 
     std::atomic<std::size_t> done{0};
     std::mutex progress_mutex;
     const TexelEvaluator& eval = *prepared.evaluator;
+    const auto& map = t.channel_map;
     auto body = [&](const oneapi::tbb::blocked_range<std::size_t>& r) {
         for (std::size_t k = r.begin(); k != r.end(); ++k) {
             double coords[3] = {0.0, 0.0, 0.0};
             std::size_t rest = k;
             for (std::size_t a = 0; a < axis_values.size(); ++a) {
                 const std::size_t n = axis_values[a].size();
-                coords[a] = axis_values[a][rest % n];
+                coords[order[a]] = axis_values[a][rest % n];
                 rest /= n;
             }
             const TexelValue v = eval.evaluate(coords, k);
             for (std::size_t c = 0; c < nc; ++c) {
-                t.values[k * nc + c] = v.value[c];
-                t.errors[k * nc + c] = v.error[c];
+                if (map.empty()) {
+                    t.values[k * nc + c] = v.value[c];
+                    t.errors[k * nc + c] = v.error[c];
+                    continue;
+                }
+                // A sum of channels: its error is bounded by the sum of theirs.
+                double value = 0.0, error = 0.0;
+                for (int tc : map[c]) {
+                    value += v.value[static_cast<std::size_t>(tc)];
+                    error += v.error[static_cast<std::size_t>(tc)];
+                }
+                t.values[k * nc + c] = value;
+                t.errors[k * nc + c] = error;
             }
         }
         const std::size_t now = done.fetch_add(r.size()) + r.size();
