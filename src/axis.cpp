@@ -101,8 +101,8 @@ Warp warp_from_string(std::string_view s) {
 
 double Axis::u(int i) const {
     const int j = flip ? count - 1 - i : i;
-    if (placement == Placement::center) return (j + 0.5) / count;
-    return count > 1 ? static_cast<double>(j) / (count - 1) : 0.0;
+    if (placement == Placement::center) return (j + 0.5 + shift) / count;
+    return count > 1 ? (j + shift) / (count - 1) : 0.0;
 }
 
 double Axis::value_at_u(double t) const {
@@ -120,14 +120,18 @@ double Axis::u_of_value(double v) const { return warp_def(warp).u_of_value(clamp
 
 double Axis::position_of_value(double v) const {
     const double t = u_of_value(v);
-    const double p = placement == Placement::center ? t * count - 0.5 : t * (count - 1);
+    const double p = placement == Placement::center ? t * count - 0.5 - shift : t * (count - 1) - shift;
     return flip ? count - 1 - p : p;
 }
 
 bool Axis::has_clamp() const { return clamp_lo != -HUGE_VAL || clamp_hi != HUGE_VAL; }
 
-double Axis::lowest() const { return clamped(std::min(min, max)); }
-double Axis::highest() const { return clamped(std::max(min, max)); }
+double Axis::lowest() const {
+    return std::min({clamped(std::min(min, max)), value(0), value(count - 1)});
+}
+double Axis::highest() const {
+    return std::max({clamped(std::max(min, max)), value(0), value(count - 1)});
+}
 
 void Axis::validate() const {
     auto fail = [&](const std::string& what) { throw Error("axis '" + name + "': " + what); };
@@ -139,6 +143,10 @@ void Axis::validate() const {
     if (const std::string why = warp_def(warp).range_problem(min, max); !why.empty()) fail(why);
     if (std::isnan(clamp_lo) || std::isnan(clamp_hi) || !(clamp_lo <= clamp_hi))
         fail("clamp " + number(clamp_lo) + ":" + number(clamp_hi) + " is not valid; allowed: LO:HI with LO <= HI");
+    if (!std::isfinite(shift) || std::abs(shift) > 2)
+        fail("shift " + number(shift) + " is out of range; allowed: -2 to 2 texels");
+    if (std::isnan(value(0)) || std::isnan(value(count - 1)))
+        fail("shift " + number(shift) + " moves the grid outside the domain of warp '" + warp_def(warp).name + "'");
     if (!std::isfinite(lowest()) || !std::isfinite(highest()))
         fail("range " + number(min) + ":" + number(max) +
              " reaches an infinite parameter; clamp it to a finite one with --clamp " + name + "=LO:HI");

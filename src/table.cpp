@@ -38,9 +38,13 @@ double number_from_json(const nlohmann::json& j) {
 std::string channel_map_to_string(const std::vector<std::vector<int>>& map) {
     std::string out;
     for (std::size_t c = 0; c < map.size(); ++c) {
-        out += (c ? "," : "") + std::string(1, kLetters[c]) + "=";
-        for (std::size_t i = 0; i < map[c].size(); ++i)
-            out += (i ? "+" : "") + std::string(1, kLetters[map[c][i]]);
+        if (c) out.push_back(',');
+        out.push_back(kLetters[c]);
+        out.push_back('=');
+        for (std::size_t i = 0; i < map[c].size(); ++i) {
+            if (i) out.push_back('+');
+            out.push_back(kLetters[map[c][i]]);
+        }
     }
     return out;
 }
@@ -170,6 +174,7 @@ nlohmann::json metadata_json(const Table& t, Storage s) {
                              {"placement", to_string(a.placement)},
                              {"warp", to_string(a.warp)}};
         if (a.flip) ax["flip"] = true;
+        if (a.shift != 0.0) ax["shift"] = a.shift;
         if (a.has_clamp()) ax["clamp"] = {number_to_json(a.clamp_lo), number_to_json(a.clamp_hi)};
         axes.push_back(ax);
     }
@@ -201,6 +206,7 @@ std::vector<Axis> axes_from_json(const nlohmann::json& axes) {
             ax.placement = placement_from_string(a.at("placement").get<std::string>());
             ax.warp = warp_from_string(a.at("warp").get<std::string>());
             if (a.contains("flip")) ax.flip = a.at("flip").get<bool>();
+            if (a.contains("shift")) ax.shift = a.at("shift").get<double>();
             if (a.contains("clamp")) {
                 const auto& c = a.at("clamp");
                 if (!c.is_array() || c.size() != 2) throw RuntimeError("'clamp' must be [lo, hi]");

@@ -258,3 +258,22 @@ TEST(Generate, WritesAnyDescribedLayoutThatCompareThenAccepts) {
                              dir);
     EXPECT_EQ(unflipped.exit_code, 1) << unflipped.out << unflipped.err;
 }
+
+TEST(Axis, ShiftMisplacesTheGridByTexelsAsFilamentsRowsAre) {
+    // Filament's rows hold r = (j + 1.5)/h, the last clamped to r = 1.
+    Axis a{"roughness", 0.0, 1.0, 8, Placement::center, Warp::linear};
+    a.shift = 1.0;
+    a.clamp_hi = 1.0;
+    a.validate();
+    for (int j = 0; j < 7; ++j) {
+        EXPECT_DOUBLE_EQ(a.value(j), (j + 1.5) / 8) << j;
+        EXPECT_NEAR(a.position_of_value(a.value(j)), j, 1e-12) << j;
+    }
+    EXPECT_EQ(a.value(7), 1.0);
+    Axis wild = a;
+    wild.shift = 3.0;
+    EXPECT_THROW(wild.validate(), Error);
+    Axis root{"alpha", 0.0, 1.0, 8, Placement::endpoints, Warp::sqrt};
+    root.shift = -1.0;  // u = -1/7 at the first texel: sqrt of a negative
+    EXPECT_THROW(root.validate(), Error);
+}

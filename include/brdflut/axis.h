@@ -5,15 +5,17 @@
 // everywhere.
 //
 //   flip       j = count - 1 - i when the axis is stored in reverse, else j = i
-//   placement  center     u = (j + 0.5) / count
-//              endpoints  u = j / (count - 1)        (count >= 2)
+//   placement  center     u = (j + 0.5 + shift) / count
+//              endpoints  u = (j + shift) / (count - 1)   (count >= 2)
+//   shift      0, or the texels by which a generator misplaced its grid
+//              (Filament's rows hold r = (j + 1.5)/h: shift 1 with a clamp)
 //   warp       value = W(u; min, max), one entry of the warp registry below;
 //              min > max is allowed (a decreasing axis)
 //   clamp      parameter = clamp(value, clamp_lo, clamp_hi)
 //
 // The inverse, used to sample a table at a parameter p:
-//   u = W^-1(clamp(p)), position = u count - 0.5 (center) or u (count - 1)
-//   (endpoints), reversed when flipped; texel i's centre is at position i,
+//   u = W^-1(clamp(p)), position = u count - 0.5 - shift (center) or
+//   u (count - 1) - shift (endpoints), reversed when flipped; texel i's centre is at position i,
 //   and the texture coordinate of a GPU sampler is (position + 0.5) / count.
 #pragma once
 
@@ -60,6 +62,7 @@ struct Axis {
     Placement placement = Placement::center;
     Warp warp = Warp::linear;
     bool flip = false;  // stored in reverse: position i holds grid index count - 1 - i
+    double shift = 0.0;  // grid offset in texels (a misplaced grid); u may then leave [0, 1]
     double clamp_lo = -std::numeric_limits<double>::infinity();
     double clamp_hi = std::numeric_limits<double>::infinity();
 
@@ -73,7 +76,7 @@ struct Axis {
     double position_of_value(double v) const;
     bool has_clamp() const;
     // The smallest and largest parameter the axis evaluates, over all of
-    // [0, 1] (clamps applied).
+    // [0, 1] and the grid (clamps applied).
     double lowest() const;
     double highest() const;
 

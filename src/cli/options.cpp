@@ -21,6 +21,9 @@ void add_table_options(CLI::App& app, TableArgs& a, bool methods) {
     app.add_option("--flip", a.flips, "Axis stored in reverse order, AXIS (repeatable)");
     app.add_option("--clamp", a.clamps,
                    "Clamp an axis's parameter, AXIS=LO:HI, e.g. cos_theta=1e-4:1 (repeatable; inf allowed)");
+    app.add_option("--shift", a.shifts,
+                   "Grid of an axis offset by some texels, AXIS=T, e.g. roughness=1 for rows one texel high "
+                   "(a misplaced grid; repeatable)");
     app.add_option("--channels", a.channels,
                    "What each stored channel holds, as sums of the table's channels, e.g. R=G,G=R+G");
     if (methods) {
@@ -179,6 +182,10 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
     for (const auto& name : a.flips) {
         if (Axis* ax = axis_named("--flip", name)) ax->flip = true;
     }
+    for (const auto& t : a.shifts) {
+        const auto [name, value] = split_assignment("--shift", t);
+        if (Axis* ax = axis_named("--shift", name)) ax->shift = parse_double("--shift " + name, value);
+    }
     if (!a.channels.empty()) {
         s.channel_map = parse_channel_map(a.channels, static_cast<int>(def.channels.size()));
         used.insert("--channels");
@@ -209,6 +216,7 @@ void check_all_used(const TableArgs& a, const std::set<std::string>& used) {
     check("--placement", a.placements);
     check("--warp", a.warps);
     check("--clamp", a.clamps);
+    check("--shift", a.shifts);
     for (const auto& name : a.flips)
         if (!used.count("--flip " + name))
             throw Error("--flip '" + name + "': no requested table has an axis named '" + name + "'");

@@ -24,10 +24,11 @@ struct TableArgs {
     std::string order;                 // --order alpha,cos_theta
     std::vector<std::string> flips;    // --flip AXIS
     std::vector<std::string> clamps;   // --clamp AXIS=LO:HI
+    std::vector<std::string> shifts;   // --shift AXIS=TEXELS
     std::string channels;              // --channels R=G,G=R+G
     bool layout_given() const {
         return !size.empty() || !ranges.empty() || !counts.empty() || !placements.empty() || !warps.empty() ||
-               !order.empty() || !flips.empty() || !clamps.empty() || !channels.empty() || !params.empty();
+               !order.empty() || !flips.empty() || !clamps.empty() || !shifts.empty() || !channels.empty() || !params.empty();
     }
     std::string method = "quadrature";
     std::string quality = "default";  // draft | default | reference
