@@ -622,6 +622,11 @@ TEST(SourceArray, ErrorsNameTheArrayAndWhatIsWrong) {
     ReadOptions opt;
     opt.array = "lut";
     EXPECT_TRUE(contains(read_error(dir / "t.npy", opt), "applies to source files, and this is a NumPy .npy file"));
+    ReadOptions shaped;
+    shaped.shape = parse_array_shape("2x2");
+    write(dir / "t.png", make_png(2, 2, PNG_COLOR_TYPE_GRAY, 8, {1, 2, 3, 4}));
+    EXPECT_TRUE(contains(read_error(dir / "t.png", shaped), "a shape (--shape 2x2:1) applies to source arrays and .npy files"))
+        << read_error(dir / "t.png", shaped);
     write(dir / "s.c", "float lut[] = {1};");
     EXPECT_TRUE(contains(read_error(dir / "s.c"), "a source file is read with --array NAME"));
 }

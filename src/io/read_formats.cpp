@@ -288,6 +288,10 @@ std::string refuse_from_head(std::string_view head, const ReadOptions& opt) {
         if (!opt.array.empty())
             return std::string("an array name (--array ") + opt.array + ") applies to source files, and this is " +
                    kKindNames[static_cast<int>(k)] + " file";
+        if (opt.shape.given() && k != Kind::npy)
+            return std::string("a shape (--shape ") + to_string(opt.shape) +
+                   ") applies to source arrays and .npy files, and this is " + kKindNames[static_cast<int>(k)] +
+                   " file, whose header gives its size";
         return {};
     }
     if (opt.array.empty())
