@@ -3,7 +3,8 @@
 #   1. the unit, table and command-line tests of the Release build;
 #   2. the same suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 #      (CMake preset `sanitize`);
-#   3. a bounded libFuzzer run on the table reader (preset `fuzz`, clang),
+#   3. a bounded libFuzzer run on every table reader (preset `fuzz`, clang;
+#      the first input byte picks the read options, see fuzz_read_table.cpp),
 #      seeded from tests/fuzz/corpus (BRDFLUT_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,7 +24,7 @@ cmake --preset sanitize > "$log/sanitize-configure.txt"
 cmake --build --preset sanitize -j"$jobs" > "$log/sanitize-build.txt" || { tail -n 50 "$log/sanitize-build.txt"; exit 1; }
 ctest --preset sanitize -j"$jobs" | tee "$log/sanitize.txt"
 
-echo "== libFuzzer on the table reader"
+echo "== libFuzzer on the table readers"
 cmake --preset fuzz > "$log/fuzz-configure.txt"
 cmake --build --preset fuzz -j"$jobs" > "$log/fuzz-build.txt" || { tail -n 50 "$log/fuzz-build.txt"; exit 1; }
 mkdir -p "$log/corpus"

@@ -22,8 +22,12 @@ struct ExrImage {
     int width = 0, height = 0;
     std::vector<std::string> channel_names;  // in file order (R, G, B, A first)
     std::vector<double> pixels;              // row-major, channels interleaved
+    // Slices of a 3-D texture (dds, ktx2) or array (npy, source): height
+    // counts the rows of all of them, row = z * (height / depth) + y.
+    int depth = 1;
     PixelType pixel = PixelType::float32;
     bool unorm16 = false;  // 16-bit integers v * 65535 (png16); pixels holds them as v
+    bool unorm8 = false;   // 8-bit integers v * 255 (PNG, npy u1); pixels holds them as v
     bool has_metadata = false;
     nlohmann::json metadata;
 };

@@ -53,13 +53,62 @@ std::string cpp_identifier(std::string_view table_id);
 // any file is created.
 void write_table(const std::string& path, const Table& table, PixelType pixel, Format f);
 
-// Reads a table file that brdflut writes in any binary format (exr, png16,
-// dds, ktx2), recognised by its first bytes, into the same structure as
-// read_exr(). Channels are named R, G, B, A as stored (a dds/ktx2 3-channel
-// table has its A = 1 padding, a png16 2-channel table its B = 0); png16
-// samples are read as q / 65535 with `pixel` float32 (the metadata's `pixel`
-// says unorm16); dds files carry no metadata. Only the layouts brdflut writes
-// are accepted. Throws brdflut::RuntimeError naming the file on any failure.
-ExrImage read_table_image(const std::string& path);
+// How a file that is not brdflut's own is to be read (the command-line
+// options --array, --shape and --decode).
+enum class Decode {
+    none,    // brdflut files; a PNG without brdflut metadata is refused
+    linear,  // integer samples q as q / (2^bits - 1)
+    srgb,    // the same, then the exact sRGB EOTF (channels 1 to 3; a 4th is alpha, linear)
+};
+std::string_view to_string(Decode d);           // "none", "linear", "srgb"
+Decode decode_from_string(std::string_view s);  // "linear" or "srgb"; throws brdflut::Error otherwise
+
+// How the numbers of an array or a .npy file form an image: width x height
+// texels (x fastest), `depth` slices stacked as rows (row = z * height + y)
+// and `channels` interleaved values per texel. width 0: inferred.
+struct ArrayShape {
+    long long width = 0, height = 1, depth = 1, channels = 1;
+    bool given() const { return width > 0; }
+};
+// "W", "WxH" or "WxHxD", optionally followed by ":C" (1 to 4 channels),
+// e.g. "32x32", "16x16x16", "64x64:2". Throws brdflut::Error naming the text.
+ArrayShape parse_array_shape(std::string_view s);
+std::string to_string(const ArrayShape& s);  // "WxH[xD]:C"
+
+struct ReadOptions {
+    // The name of an array in a source file (C, C++, GLSL, HLSL,
+    // JavaScript); required for source files, refused for binary ones.
+    std::string array;
+    // The image the numbers form (source arrays and .npy); not given: from
+    // the declared dimensions, the nesting of the initializer or the .npy
+    // shape.
+    ArrayShape shape;
+    Decode decode = Decode::none;
+};
+
+// Reads a table file, recognised by its first bytes, into the same structure
+// as read_exr():
+//   exr, dds, ktx2 and png16 as brdflut writes them (dds and ktx2 also as
+//       3-D textures: DX10 TEXTURE3D with DDSD_DEPTH, KTX2 pixelDepth > 0,
+//       read with depth = the slice count, slices stacked as rows);
+//   any PNG libpng reads (8 or 16 bits, grey, grey + alpha, RGB, RGBA,
+//       palette expanded to RGB or RGBA): samples q read as q / 255 or
+//       q / 65535 (unorm8 / unorm16). One without brdflut metadata needs
+//       options.decode (linear or srgb);
+//   NumPy .npy, versions 1 to 3, dtypes f2, f4, f8, u1, u2 (u1 and u2 read
+//       as q / 255 and q / 65535), either byte order, C order, shape (W),
+//       (H, W), (H, W, C) with C <= 4, (D, H, W) or (D, H, W, C);
+//   a source file with options.array: the initializer of that array
+//       (source_array.cpp describes the syntax and the shape rules).
+// Channels are named R, G, B, A as stored (a dds/ktx2 3-channel table has
+// its A = 1 padding, a png16 2-channel table its B = 0). Only regular files
+// are read (not FIFOs, devices or directories), binary files up to
+// kMaxBinaryFileBytes, source files up to kMaxTextFileBytes (io/image_limits.h),
+// and the format is decided from the first bytes before the rest is read.
+// Throws brdflut::RuntimeError naming the file on any failure.
+ExrImage read_table_image(const std::string& path, const ReadOptions& options = {});
+// The same for a file's bytes in memory (name is used in messages).
+ExrImage read_table_image_memory(const char* data, std::size_t size, const std::string& name,
+                                 const ReadOptions& options = {});
 
 }  // namespace brdflut

@@ -87,6 +87,7 @@ Tolerance parse_tolerance(const std::string& s) {
 
 double storage_step(const ExrImage& img, double v) {
     if (img.unorm16) return 1.0 / 65535.0;
+    if (img.unorm8) return 1.0 / 255.0;
     const double a = std::abs(v);
     // The spacing of the float type around v (the smallest normal's below it).
     const int mantissa = img.pixel == PixelType::half ? 10 : 23;
@@ -105,7 +106,7 @@ Tolerance default_tolerance(const ExrImage& img) {
     }
     t.steps = 1.0;
     t.source = "one storage step of the file's " +
-               std::string(img.unorm16 ? "unorm16" : std::string(to_string(img.pixel))) + " values";
+               std::string(img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : std::string(to_string(img.pixel))) + " values";
     return t;
 }
 

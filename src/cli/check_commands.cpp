@@ -56,7 +56,7 @@ struct Described {
 
 Described describe(const DescribeArgs& a) {
     Described d;
-    d.image = read_table_image(a.file);
+    d.image = read_table_image(a.file, read_options(a.read));
     if (a.as.empty()) {
         if (a.table.layout_given())
             throw Error("axis, layout and model options describe a foreign file and need --as <table id>");
@@ -198,15 +198,25 @@ int run_compare(const CompareArgs& a) {
     return rep.pass() ? 0 : kExitFailure;
 }
 
-int run_inspect(const std::string& file, bool json) {
-    const ExrImage img = read_table_image(file);
+ReadOptions read_options(const ReadArgs& a) {
+    ReadOptions o;
+    o.array = a.array;
+    if (!a.shape.empty()) o.shape = parse_array_shape(a.shape);
+    if (!a.decode.empty()) o.decode = decode_from_string(a.decode);
+    return o;
+}
+
+int run_inspect(const std::string& file, const ReadArgs& read, bool json) {
+    const ExrImage img = read_table_image(file, read_options(read));
+    const char* pixel = img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : nullptr;
     const std::vector<ChannelStats> stats = channel_stats(img);
     if (json) {
         nlohmann::json j;
         j["file"] = file;
         j["width"] = img.width;
         j["height"] = img.height;
-        j["pixel"] = img.unorm16 ? std::string("unorm16") : std::string(to_string(img.pixel));
+        j["depth"] = img.depth;
+        j["pixel"] = pixel ? std::string(pixel) : std::string(to_string(img.pixel));
         j["metadata"] = img.has_metadata ? img.metadata : nlohmann::json(nullptr);
         nlohmann::json ch = nlohmann::json::array();
         for (const auto& s : stats)
@@ -215,8 +225,11 @@ int run_inspect(const std::string& file, bool json) {
         std::cout << j.dump(2) << "\n";
         return 0;
     }
-    std::printf("file:   %s\nsize:   %dx%d, %zu channel(s), %s\n", file.c_str(), img.width, img.height,
-                img.channel_names.size(), img.unorm16 ? "unorm16" : std::string(to_string(img.pixel)).c_str());
+    const std::string slices = img.depth > 1 ? " (" + std::to_string(img.depth) + " slices of " +
+                                                   std::to_string(img.height / img.depth) + " rows)"
+                                             : std::string();
+    std::printf("file:   %s\nsize:   %dx%d%s, %zu channel(s), %s\n", file.c_str(), img.width, img.height,
+                slices.c_str(), img.channel_names.size(), pixel ? pixel : std::string(to_string(img.pixel)).c_str());
     std::printf("\n%-8s %-14s %-14s %-14s %s\n", "channel", "min", "max", "mean", "non-finite");
     for (const auto& s : stats)
         std::printf("%-8s %-14.7g %-14.7g %-14.7g %lld\n", s.channel.c_str(), s.min, s.max, s.mean, s.non_finite);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "brdflut/formats.h"
 #include "cli/options.h"
 
 namespace brdflut::cli {
@@ -32,9 +33,17 @@ struct VerifyArgs {
 };
 int run_verify(const VerifyArgs& a);
 
+// How a file that is not brdflut's own is read: --array NAME (an array in a
+// source file), --shape WxH[xD][:C], --decode linear|srgb (formats.h).
+struct ReadArgs {
+    std::string array, shape, decode;
+};
+ReadOptions read_options(const ReadArgs& a);  // throws brdflut::Error on a bad --shape or --decode
+
 // How a file is described: its metadata, or --as with the table options.
 struct DescribeArgs {
     std::string file;
+    ReadArgs read;
     std::string as;
     TableArgs table;  // axes, layout and model options of a foreign file
 };
@@ -49,7 +58,7 @@ struct CompareArgs {
 };
 int run_compare(const CompareArgs& a);
 
-int run_inspect(const std::string& file, bool json);
+int run_inspect(const std::string& file, const ReadArgs& read, bool json);
 
 struct SampleArgs {
     DescribeArgs describe;

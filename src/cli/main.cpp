@@ -24,8 +24,21 @@ extern "C" void on_signal(int sig) {
     std::raise(sig);
 }
 
+constexpr const char* kFileHelp =
+    "The LUT file: OpenEXR, DDS, KTX2, PNG, NumPy .npy, or a source file (C, C++, GLSL, HLSL, JavaScript) with --array";
+
+void add_read_options(CLI::App& app, ReadArgs& r) {
+    app.add_option("--array", r.array, "Read the initializer of this array in a source file");
+    app.add_option("--shape", r.shape,
+                   "Shape of a source array or .npy data: W, WxH or WxHxD, optionally :C channels (e.g. 32x32, 64x64:2)");
+    app.add_option("--decode", r.decode,
+                   "How integer samples become numbers: linear (q/255, q/65535) or srgb (then the sRGB EOTF); "
+                   "required for a PNG without brdflut metadata");
+}
+
 void add_describe_options(CLI::App& app, DescribeArgs& d) {
-    app.add_option("file", d.file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
+    app.add_option("file", d.file, kFileHelp)->required();
+    add_read_options(app, d.read);
     app.add_option("--as", d.as, "Table id of a foreign file (one without brdflut metadata)");
     add_table_options(app, d.table, false);
 }
@@ -121,7 +134,9 @@ int main(int argc, char** argv) {
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;
     bool inspect_json = false;
-    ins->add_option("file", inspect_file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file written by brdflut)")->required();
+    ReadArgs inspect_read;
+    ins->add_option("file", inspect_file, kFileHelp)->required();
+    add_read_options(*ins, inspect_read);
     ins->add_flag("--json", inspect_json, "Print as JSON");
 
     CLI::App* smp = app.add_subcommand("sample", "Value of a LUT at a parameter point, filtered as a GPU does");
@@ -163,7 +178,7 @@ int main(int argc, char** argv) {
             collect_params(*cmp, c.describe.table);
             return run_compare(c);
         }
-        if (app.got_subcommand(ins)) return run_inspect(inspect_file, inspect_json);
+        if (app.got_subcommand(ins)) return run_inspect(inspect_file, inspect_read, inspect_json);
         if (app.got_subcommand(smp)) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);

@@ -14,13 +14,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <unistd.h>
 
 #include "brdflut/error.h"
 #include "io/atomic_file.h"
 #include "io/image_limits.h"
+#include "io/input_file.h"
 #include "io/table_checks.h"
 
 namespace brdflut {
@@ -97,8 +95,6 @@ private:
     std::uint64_t size_;
     std::uint64_t pos_ = 0;
 };
-
-constexpr std::size_t kMaxFileBytes = std::size_t{1} << 30;
 
 // Bytes of one compressed chunk (a block of scan lines, or a tile) once
 // decoded; OpenEXR allocates its buffers from this. A table is at most
@@ -276,16 +272,12 @@ ExrImage read_exr_memory(const char* data, std::size_t size, const std::string& 
 }
 
 ExrImage read_exr(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw RuntimeError("cannot read '" + path + "': no such file");
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) throw RuntimeError("cannot read '" + path + "': " + ec.message());
-    if (size > kMaxFileBytes) throw RuntimeError("cannot read '" + path + "': larger than 1 GiB");
-    std::ifstream in(path, std::ios::binary);
-    std::vector<char> bytes(static_cast<std::size_t>(size));
-    if (!in || !in.read(bytes.data(), static_cast<std::streamsize>(bytes.size())))
-        throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+    // Look before reading: a regular file (not a FIFO or a device), the
+    // OpenEXR magic number in its first bytes, then at most the size limit.
+    InputFile file(path);
+    if (file.head(4) != std::string("\x76\x2f\x31\x01", 4))
+        file.fail("not a valid OpenEXR file (its first bytes are not the OpenEXR magic number)");
+    const std::string bytes = file.read_all(kMaxBinaryFileBytes, "an OpenEXR file");
     return read_exr_memory(bytes.data(), bytes.size(), path);
 }
 

@@ -1,16 +1,34 @@
-// libFuzzer target: the table reader (OpenEXR and the brdflut metadata JSON)
-// must turn any input into either a table or a brdflut::RuntimeError, never a
-// crash, a hang or another exception. Build with the `fuzz` CMake preset.
+// libFuzzer target: every table reader (OpenEXR, DDS, KTX2, PNG, NumPy .npy,
+// arrays in source files, and the brdflut metadata JSON) must turn any input
+// into either a table or a brdflut::RuntimeError, never a crash, a hang or
+// another exception. Build with the `fuzz` CMake preset.
+//
+// The first input byte picks the read options, the rest is the file:
+//   bits 0-1: decode none, linear, srgb, or (3) read as a source file with
+//             --array lut; bit 2: a given shape (4x4:1, or 2x2x2:2 with bit 3).
+// The seeds in tests/fuzz/corpus carry that byte: 0x00 for binary files,
+// 0x01 for PNGs without metadata, 0x03 for source files.
 #include <cstddef>
 #include <cstdint>
 
 #include "brdflut/error.h"
-#include "brdflut/exr.h"
+#include "brdflut/formats.h"
 #include "brdflut/lut.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return 0;
+    const std::uint8_t pick = data[0];
+    brdflut::ReadOptions opt;
+    switch (pick & 3) {
+        case 1: opt.decode = brdflut::Decode::linear; break;
+        case 2: opt.decode = brdflut::Decode::srgb; break;
+        case 3: opt.array = "lut"; break;
+        default: break;
+    }
+    if (pick & 4) opt.shape = (pick & 8) ? brdflut::ArrayShape{2, 2, 2, 2} : brdflut::ArrayShape{4, 4, 1, 1};
     try {
-        const brdflut::ExrImage img = brdflut::read_exr_memory(reinterpret_cast<const char*>(data), size, "input");
+        const brdflut::ExrImage img =
+            brdflut::read_table_image_memory(reinterpret_cast<const char*>(data + 1), size - 1, "input", opt);
         if (img.has_metadata) {
             const brdflut::LutDescription d = brdflut::describe_from_metadata(img, "input");
             brdflut::check_fits(img, d, "input");
