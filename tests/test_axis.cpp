@@ -9,6 +9,7 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
+#include "brdflut/formats.h"
 #include "brdflut/generate.h"
 #include "brdflut/lut.h"
 #include "test_support.h"
@@ -276,4 +277,26 @@ TEST(Axis, ShiftMisplacesTheGridByTexelsAsFilamentsRowsAre) {
     Axis root{"alpha", 0.0, 1.0, 8, Placement::endpoints, Warp::sqrt};
     root.shift = -1.0;  // u = -1/7 at the first texel: sqrt of a negative
     EXPECT_THROW(root.validate(), Error);
+}
+
+TEST(Compare, ASourceArrayIsHeldToItsPrintedDigitsAndCyclesGgxEPassesInItsLayout) {
+    TempDir dir;
+    {
+        std::ofstream f(dir / "t.c");
+        f << "const float t[3] = {0.5f, 0.25, 1.5e-3};\n";
+    }
+    ReadOptions o;
+    o.array = "t";
+    const ExrImage img = read_table_image(dir / "t.c", o);
+    EXPECT_DOUBLE_EQ(img.printed_step, 1e-4);
+    EXPECT_DOUBLE_EQ(storage_step(img, 0.5), 1e-4);
+    // Cycles' ggx_E, printed with 6 decimals, read in Cycles' layout: within
+    // one unit of its last digit everywhere; without the clamp of mu it fails.
+    const std::string cycles = std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/cycles/shader.tables";
+    const std::string layout = " --array table_ggx_E --shape 32x32 --as ggx_albedo --order alpha,cos_theta"
+                               " --placement alpha=endpoints --placement cos_theta=endpoints";
+    auto pass = run_cli("compare '" + cycles + "'" + layout + " --clamp cos_theta=1e-4:1 --json", dir);
+    EXPECT_EQ(pass.exit_code, 0) << pass.out << pass.err;
+    auto fail = run_cli("compare '" + cycles + "'" + layout, dir);
+    EXPECT_EQ(fail.exit_code, 1) << fail.out << fail.err;
 }

@@ -88,6 +88,7 @@ Tolerance parse_tolerance(const std::string& s) {
 double storage_step(const ExrImage& img, double v) {
     if (img.unorm16) return 1.0 / 65535.0;
     if (img.unorm8) return 1.0 / 255.0;
+    if (img.printed_step > 0) return img.printed_step;
     const double a = std::abs(v);
     // The spacing of the float type around v (the smallest normal's below it).
     const int mantissa = img.pixel == PixelType::half ? 10 : 23;
@@ -105,8 +106,11 @@ Tolerance default_tolerance(const ExrImage& img) {
         return t;
     }
     t.steps = 1.0;
-    t.source = "one storage step of the file's " +
-               std::string(img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : std::string(to_string(img.pixel))) + " values";
+    t.source = img.printed_step > 0
+                   ? "one unit of the last printed digit of the file's numbers"
+                   : "one storage step of the file's " +
+                         std::string(img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : std::string(to_string(img.pixel))) +
+                         " values";
     return t;
 }
 

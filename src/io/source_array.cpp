@@ -23,6 +23,7 @@
 // (double).
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 
@@ -166,6 +167,24 @@ bool number_value(std::string_view t, double& v) {
     return true;
 }
 
+// The unit of a decimal number's last printed digit: 1e-6 for "0.998773f",
+// 1e-4 for "1.5e-3"; infinite for a hex number.
+double printed_step(std::string_view t) {
+    if (t.size() > 1 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) return HUGE_VAL;
+    const std::size_t e = t.find_first_of("eE");
+    const std::string_view mantissa = t.substr(0, e);
+    const std::size_t dot = mantissa.find('.');
+    int decimals = 0;
+    if (dot != std::string_view::npos)
+        for (std::size_t i = dot + 1; i < mantissa.size() && digit(mantissa[i]); ++i) ++decimals;
+    long exponent = 0;
+    if (e != std::string_view::npos) {
+        std::from_chars(t.data() + e + 1 + (e + 1 < t.size() && t[e + 1] == '+'), t.data() + t.size(), exponent);
+        exponent = std::clamp(exponent, -400L, 400L);
+    }
+    return std::pow(10.0, static_cast<double>(exponent - decimals));
+}
+
 // Vector element types: their component count, else 0.
 long long vector_size(std::string_view type) {
     for (std::string_view prefix : {"vec", "dvec", "float", "half", "double", "min16float"})
@@ -219,11 +238,16 @@ public:
         return s;
     }
 
+    // The smallest unit of the last printed digit over the numbers read (the
+    // resolution the array was printed with); infinite when none is decimal.
+    double step() const { return step_; }
+
 private:
     Lexer& lex_;
     const std::string& file_;
     const std::string& array_;
     std::vector<double>& out_;
+    double step_ = HUGE_VAL;
 
     static std::string describe(const Token& t) {
         if (t.kind == Tok::end) return "the end of the file";
@@ -251,6 +275,7 @@ private:
         if (static_cast<long long>(out_.size()) >= kMaxImageValues)
             fail(t.line, "holds more than the " + std::to_string(kMaxImageValues) + " values of the largest image");
         out_.push_back(sign * v);
+        step_ = std::min(step_, printed_step(t.text));
         return {};
     }
 };
@@ -354,6 +379,7 @@ ExrImage read_source_array(const char* data, std::size_t size, const std::string
         }
         ArrayParser parser(lex, name, want, values);
         const Shape nested = parser.group(open.text[0], 1);
+        const double parser_step = parser.step();
         const long long count = static_cast<long long>(values.size());
         if (count == 0) throw fail("array '" + want + "' (line " + std::to_string(decl.line) + ") is empty");
         // Declared dimensions.
@@ -402,6 +428,7 @@ ExrImage read_source_array(const char* data, std::size_t size, const std::string
             throw fail("array '" + want + "': " + why);
         img.pixel = PixelType::float32;
         img.pixels = std::move(values);
+        img.printed_step = std::isfinite(parser_step) ? parser_step : 0.0;
         return img;
     }
     std::string list;
