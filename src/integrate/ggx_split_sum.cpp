@@ -331,9 +331,10 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // integrand is smooth, even and 2 pi periodic in phi, so the trapezoidal
     // rule converges exponentially; double the nodes until two successive
     // sums agree.
+    int evaluations = 0;  // of the phi integrand, in every inner integral
     auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol);
+        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol, &evaluations);
     };
 
     // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
@@ -351,6 +352,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         std::array<double, 3> r{};
         auto add = [&](auto integrand, double s0, double s1) {
             const Estimate<2> in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
+            evaluations += in.evaluations;
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
@@ -405,7 +407,6 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             out.value[c] += e.value[c];
             out.error[c] += e.error[c] + e.value[2];
         }
-        out.evaluations += e.evaluations;
     };
 
     // Full circle for t <= t_a (normal incidence: t_a = 1, nothing beyond).
@@ -464,6 +465,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             },
             0.0, 1.0, panels, outer_opt));
     }
+    out.evaluations = evaluations;
     return out;
 }
 
@@ -491,12 +493,12 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
         const double budget = 0.25 * abs_tol / span;
         const double tol = w * kMaxNestedTol > budget ? budget / w : kMaxNestedTol;
         const Estimate<2> s = ggx_split_sum(mu, alpha, vis, tol);
+        out.evaluations += s.evaluations;
         return {w * (s.value[0] + s.value[1]), w * (s.error[0] + s.error[1])};
     };
     auto accumulate = [&](const Estimate<2>& e) {
         out.value[0] += e.value[0];
         out.error[0] += e.error[0] + e.value[1];
-        out.evaluations += e.evaluations;
     };
     const double b = std::min(alpha, 1.0);
     accumulate(integrate_adaptive<2>(

@@ -30,8 +30,9 @@ inline const std::vector<double>& half_circle_cosines() {
 // the nodes are doubled until two successive sums differ by at most tol
 // (summed over channels; at least 8 intervals). Returns the N values and,
 // last, that difference as the error estimate (tol if the table runs out).
+// Adds the number of evaluations of f to *evaluations when given.
 template <std::size_t N, class F>
-std::array<double, N + 1> trapezoid_half_circle(F&& f, double tol) {
+std::array<double, N + 1> trapezoid_half_circle(F&& f, double tol, int* evaluations = nullptr) {
     const std::vector<double>& cosines = half_circle_cosines();
     auto sample = [&](int j) { return f(cosines[static_cast<std::size_t>(j)]); };
     const std::array<double, N> ends = sample(0), mid = sample(kHalfCircleSteps);
@@ -41,7 +42,9 @@ std::array<double, N + 1> trapezoid_half_circle(F&& f, double tol) {
         prev[i] = HUGE_VAL;
     }
     std::array<double, N + 1> out{};
+    if (evaluations) *evaluations += 2;
     for (int n = 1; n <= kHalfCircleSteps / 2; n *= 2) {
+        if (evaluations) *evaluations += n;
         // Add the nodes (2k + 1) pi / (2n), halving the step to pi / (2n).
         const int stride = kHalfCircleSteps / n;
         // An integrand with a member batch(const double* cos_phi,
