@@ -24,7 +24,10 @@
 // As in Filament, every texel draws its own N points (angles, sines and
 // cosines per sample and texel; nothing is hoisted out of the texel), the
 // points are float, a negative n.l drops the sample (it counts in N), and
-// the table is filled one row (one alpha) per task. Real is the arithmetic
+// the table is filled one row (one alpha) per task. The benchmark evaluates
+// it at ggx_dfg's own texel centres (Filament's rows sit at sqrt(alpha) =
+// (height - y + 0.5) / height, half a texel off), so that the two tables
+// compare value for value. Real is the arithmetic
 // of everything after the points: float (the cheapest) or double (what
 // Filament's current sources use).
 #pragma once
