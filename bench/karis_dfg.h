@@ -25,9 +25,10 @@
 // cosines per sample and texel; nothing is hoisted out of the texel), the
 // points are float, a negative n.l drops the sample (it counts in N), and
 // the table is filled one row (one alpha) per task. The benchmark evaluates
-// it at ggx_dfg's own texel centres (Filament's rows sit at sqrt(alpha) =
-// (height - y + 0.5) / height, half a texel off), so that the two tables
-// compare value for value. Real is the arithmetic
+// it at ggx_dfg's own texel centres so that the two tables compare value for
+// value (Filament's rows sit at sqrt(alpha) = (height - y + 0.5) / height,
+// one texel above the centres (height - y - 0.5) / height, its top row
+// clamped to 1). Real is the arithmetic
 // of everything after the points: float (the cheapest) or double (what
 // Filament's current sources use).
 #pragma once
