@@ -7,8 +7,9 @@
 //
 // 1. Generates every table of the catalogue in catalogue order in one process
 //    (as `brdflut generate --all` does; ggx_albedo reuses ggx_dfg's split sums)
-//    and prints the wall and CPU time of each and of all, and the peak
-//    resident memory of the process at that point.
+//    and prints the wall and CPU time of each and of all, the integrand
+//    evaluations per texel (tables that count them), and the peak resident
+//    memory of the process at that point.
 // 2. Unless --no-reference: generates every table again with --quality
 //    reference (absolute tolerance 1e-12 or tighter, at least 100 times
 //    tighter than the default) and prints, per table, the largest difference
@@ -16,6 +17,8 @@
 //    metadata `error_bound`, and how many values' own error estimates failed
 //    to cover their difference. Closed-form tables are their own reference
 //    (their accuracy is checked by the tests against independent quadrature).
+//    Each table's figures are also printed as one line "table id=... key=value
+//    ..." that bench/readme_figures.h renders into README.md.
 // 3. Unless --no-mc: generates ggx_dfg with --method mc at 1024 samples per
 //    texel and at M (default 16384) and compares both with the reference;
 //    the error of the mean falls as 1/sqrt(N), so the samples needed for a
@@ -100,6 +103,12 @@ Comparison compare(const Table& t, const Table& ref) {
 
 std::string method_name(const Table& t) { return t.method.value("name", std::string("?")); }
 
+// Integrand evaluations per texel (0 for tables that do not count them, and
+// for ggx_albedo when it reuses ggx_dfg's split sums).
+double evaluations_per_texel(const Table& t) {
+    return static_cast<double>(t.evaluations) / static_cast<double>(t.texel_count());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,8 +150,8 @@ int main(int argc, char** argv) {
         runs.push_back(timed_generate(d.id, Method::quadrature, quality, 0, threads));
         total += runs.back().seconds;
         total_cpu += runs.back().cpu_seconds;
-        std::printf("  generate %-30s %8.3f s wall %8.3f s cpu\n", d.id.c_str(), runs.back().seconds,
-                    runs.back().cpu_seconds);
+        std::printf("  generate %-30s %8.3f s wall %8.3f s cpu %10.0f evaluations per texel\n", d.id.c_str(),
+                    runs.back().seconds, runs.back().cpu_seconds, evaluations_per_texel(runs.back().table));
     }
     std::printf("  generate all %-2zu tables             %8.3f s wall %8.3f s cpu (%.3f s wall "
                 "with bookkeeping)\n",
@@ -163,6 +172,12 @@ int main(int argc, char** argv) {
                     c.max_stored_diff, error_bound(r.table, PixelType::float32), c.max_estimate,
                     c.uncovered, c.compared);
         references.emplace(r.table.id, ref.table);
+        // The same as one machine-readable line (bench/readme_figures.h).
+        std::printf("table id=%s threads=%s wall_s=%.4f cpu_s=%.4f evaluations_per_texel=%.0f "
+                    "max_error_stored=%.3e max_error=%.3e error_bound=%.3e uncovered=%zu\n",
+                    r.table.id.c_str(), threads > 0 ? std::to_string(threads).c_str() : "all", r.seconds,
+                    r.cpu_seconds, evaluations_per_texel(r.table), c.max_stored_diff, c.max_diff,
+                    error_bound(r.table, PixelType::float32), c.uncovered);
     }
 
     if (mc) {

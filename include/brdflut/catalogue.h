@@ -32,10 +32,14 @@ struct AxisSpec {
     std::string meaning;  // e.g. "cos(theta_o), cosine of the view angle"
 };
 
-// Values and estimated absolute errors of one texel's channels.
+// Values and estimated absolute errors of one texel's channels, and the
+// work spent on them: evaluations of the integrands (0 for closed forms, for
+// values taken from a result shared with an earlier table, and for tables
+// that do not count them).
 struct TexelValue {
     std::array<double, 4> value{};
     std::array<double, 4> error{};
+    long long evaluations = 0;
 };
 
 class TexelEvaluator {
@@ -81,6 +85,11 @@ const std::vector<Preset>& presets();
 const Preset& find_preset(const std::string& name);
 // The catalogue's tables of one preset, in catalogue order.
 std::vector<const TableDefinition*> preset_tables(const std::string& name);
+
+// Forgets the intermediate results that tables generated in one process
+// share (the GGX split sums that ggx_albedo takes from ggx_dfg). No value
+// depends on them; a benchmark calls this so that each run does all its work.
+void clear_shared_results();
 
 // The defaults of a table: its axes and the default of every option.
 TableSettings default_settings(const TableDefinition& def);

@@ -31,10 +31,13 @@ inline constexpr double kGgxAbsTolerance = 1e-9;
 inline constexpr double kGgxTableTolerance = 1e-8;
 
 // Deterministic quadrature over the half vector. value = {A, B}, error = the
-// estimated absolute error of each. mu_o in [0, 1], alpha >= 0.
+// estimated absolute error of each, evaluations = how many times the
+// integrand over the azimuth was evaluated (the work). mu_o in [0, 1],
+// alpha >= 0.
 Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_tol = kGgxAbsTolerance);
 
-// E_avg(alpha) = 2 * integral of E(mu) mu dmu over [0, 1], by quadrature.
+// E_avg(alpha) = 2 * integral of E(mu) mu dmu over [0, 1], by quadrature
+// (evaluations: those of all its split sums).
 Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol = kGgxAbsTolerance);
 
 // Monte Carlo estimates by visible-normal sampling (Heitz 2018): value = the

@@ -15,6 +15,10 @@
 #include <cstddef>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace brdflut {
 
 // n-point Gauss-Legendre rule on [-1, 1].
@@ -114,6 +118,72 @@ struct Interval {
     double worst;  // largest error among the controlled channels
 };
 
+// The weights of a K-point panel in the order kronrod_panel_k evaluates its
+// nodes (centre, then each pair c -+ h x_j): Kronrod, and embedded Gauss (0 at
+// the Kronrod-only nodes).
+template <int K>
+struct PanelWeights {
+    std::array<double, K> wk{}, wg{};
+};
+template <int K>
+constexpr PanelWeights<K> panel_weights() {
+    using R = KronrodNodes<K>;
+    constexpr int half = K / 2;
+    PanelWeights<K> p;
+    p.wk[0] = R::wk[half];
+    p.wg[0] = R::wg[half / 2];
+    for (int j = 0; j < half; ++j) {
+        p.wk[1 + 2 * j] = p.wk[2 + 2 * j] = R::wk[static_cast<std::size_t>(j)];
+        p.wg[1 + 2 * j] = p.wg[2 + 2 * j] = (j % 2 == 1) ? R::wg[static_cast<std::size_t>(j / 2)] : 0.0;
+    }
+    return p;
+}
+
+// The Kronrod and Gauss sums of a panel's values y (in kronrod_panel_k's node
+// order) and the Kronrod sum of |y - mean|, mean = Kronrod sum / 2, per
+// channel. Each channel's terms are added in node order; with SSE2 two
+// channels go side by side (the same operations, so the same bits). The
+// Gauss sum skips the nodes where its weight is 0, which adds exactly 0.
+template <int K, std::size_t N>
+void panel_sums(const std::array<std::array<double, N>, K>& y, std::array<double, N>& k,
+                std::array<double, N>& g, std::array<double, N>& asc) {
+    static constexpr PanelWeights<K> W = panel_weights<K>();
+    constexpr int half = K / 2;
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    for (; i + 2 <= N; i += 2) {
+        __m128d kv = _mm_setzero_pd(), gv = _mm_setzero_pd(), av = _mm_setzero_pd();
+        for (int n = 0; n < K; ++n)
+            kv = _mm_add_pd(kv, _mm_mul_pd(_mm_set1_pd(W.wk[static_cast<std::size_t>(n)]), _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i])));
+        gv = _mm_add_pd(gv, _mm_mul_pd(_mm_set1_pd(W.wg[0]), _mm_loadu_pd(&y[0][i])));
+        for (int j = 1; j < half; j += 2)
+            for (int n = 1 + 2 * j; n <= 2 + 2 * j; ++n)
+                gv = _mm_add_pd(gv, _mm_mul_pd(_mm_set1_pd(W.wg[static_cast<std::size_t>(n)]), _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i])));
+        const __m128d mean = _mm_mul_pd(_mm_set1_pd(0.5), kv);
+        const __m128d sign = _mm_set1_pd(-0.0);
+        for (int n = 0; n < K; ++n) {
+            const __m128d d = _mm_andnot_pd(sign, _mm_sub_pd(_mm_loadu_pd(&y[static_cast<std::size_t>(n)][i]), mean));
+            av = _mm_add_pd(av, _mm_mul_pd(_mm_set1_pd(W.wk[static_cast<std::size_t>(n)]), d));
+        }
+        _mm_storeu_pd(&k[i], kv);
+        _mm_storeu_pd(&g[i], gv);
+        _mm_storeu_pd(&asc[i], av);
+    }
+#endif
+    for (; i < N; ++i) {
+        double kv = 0.0, gv = 0.0, av = 0.0;
+        for (int n = 0; n < K; ++n) kv += W.wk[static_cast<std::size_t>(n)] * y[static_cast<std::size_t>(n)][i];
+        gv += W.wg[0] * y[0][i];
+        for (int j = 1; j < half; j += 2)
+            for (int n = 1 + 2 * j; n <= 2 + 2 * j; ++n) gv += W.wg[static_cast<std::size_t>(n)] * y[static_cast<std::size_t>(n)][i];
+        const double mean = 0.5 * kv;
+        for (int n = 0; n < K; ++n) av += W.wk[static_cast<std::size_t>(n)] * std::abs(y[static_cast<std::size_t>(n)][i] - mean);
+        k[i] = kv;
+        g[i] = gv;
+        asc[i] = av;
+    }
+}
+
 // One Kronrod panel (K = 15 or 31 points) on [a, b]. The error estimate
 // per channel is QUADPACK's: resasc * min(1, (200 |K - G| / resasc)^1.5),
 // with resasc the Kronrod integral of |f - mean|. It models the much faster
@@ -126,13 +196,6 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
     const double c = 0.5 * (a + b);
     const double h = 0.5 * (b - a);
     std::array<std::array<double, N>, K> y;
-    std::array<double, K> wk, wg;
-    wk[0] = R::wk[half];
-    wg[0] = R::wg[half / 2];
-    for (int j = 0; j < half; ++j) {
-        wk[1 + 2 * j] = wk[2 + 2 * j] = R::wk[static_cast<std::size_t>(j)];
-        wg[1 + 2 * j] = wg[2 + 2 * j] = (j % 2 == 1) ? R::wg[static_cast<std::size_t>(j / 2)] : 0.0;
-    }
     // An integrand with a member batch(const double* x, std::array<double,
     // N>* y, int n) evaluates the K nodes in one call (to use SIMD); it must
     // return exactly what f(x) returns at each node.
@@ -153,19 +216,13 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
             y[2 + 2 * j] = f(c + dx);
         }
     }
+    std::array<double, N> k, g, asc;
+    panel_sums<K, N>(y, k, g, asc);
     Interval<N> r{a, b, {}, {}, 0.0};
+    const double abs_h = std::abs(h);
     for (std::size_t i = 0; i < N; ++i) {
-        double k = 0.0, g = 0.0;
-        for (int n = 0; n < K; ++n) {
-            k += wk[n] * y[n][i];
-            g += wg[n] * y[n][i];
-        }
-        const double mean = 0.5 * k;
-        double asc = 0.0;
-        for (int n = 0; n < K; ++n) asc += wk[n] * std::abs(y[n][i] - mean);
-        asc *= std::abs(h);
-        const double err = kronrod_error((k - g) * h, asc, k * h);
-        r.value[i] = k * h;
+        const double err = kronrod_error((k[i] - g[i]) * h, asc[i] * abs_h, k[i] * h);
+        r.value[i] = k[i] * h;
         r.error[i] = err;
         if (i < controlled) r.worst = std::max(r.worst, err);
     }

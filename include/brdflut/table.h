@@ -60,6 +60,9 @@ struct Table {
     std::vector<double> values;
     // Estimated absolute integration error of each value (same layout).
     std::vector<double> errors;
+    // Integrand evaluations spent on the values (the sum of the texels'
+    // TexelValue::evaluations; not written to files).
+    long long evaluations = 0;
 
     int width() const { return axes.empty() ? 0 : axes[0].count; }
     // Rows of the image: the second axis, with z slices stacked vertically.

@@ -57,10 +57,12 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     const std::vector<int> order = definition_axis_order(def, settings);
 
     std::atomic<std::size_t> done{0};
+    std::atomic<long long> evaluations{0};
     std::mutex progress_mutex;
     const TexelEvaluator& eval = *prepared.evaluator;
     const auto& map = t.channel_map;
     auto body = [&](const oneapi::tbb::blocked_range<std::size_t>& r) {
+        long long work = 0;
         for (std::size_t k = r.begin(); k != r.end(); ++k) {
             double coords[3] = {0.0, 0.0, 0.0};
             std::size_t rest = k;
@@ -85,7 +87,9 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
                 t.values[k * nc + c] = value;
                 t.errors[k * nc + c] = error;
             }
+            work += v.evaluations;
         }
+        evaluations.fetch_add(work, std::memory_order_relaxed);
         const std::size_t now = done.fetch_add(r.size()) + r.size();
         if (options.progress) {
             std::unique_lock<std::mutex> lock(progress_mutex, std::try_to_lock);
@@ -100,6 +104,7 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
                                       static_cast<std::size_t>(threads));
     oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, texels, 1), body);
     if (options.progress) options.progress(texels, texels);
+    t.evaluations = evaluations.load();
     return t;
 }
 

@@ -22,16 +22,20 @@
 // in tan(phi / 2), where the integrand is rational. Each inner integral gets
 // the tolerance its outer weight requires (budget / (weight * range)), and
 // its error estimate is integrated along with the values, so the reported
-// error covers both levels.
+// error covers both levels. The phi integrands are evaluated four nodes at
+// a time with AVX2 when the processor has it, else two with SSE2, by exactly
+// the operations of one node at a time (ggx_phi_kernels.inc), so the values
+// do not depend on the machine.
 #include "brdflut/ggx_integrals.h"
 
 #include <cmath>
 #include <vector>
 
 #if defined(__SSE2__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #endif
 
+#include "integrate/ggx_simd.h"
 #include "integrate/half_circle.h"
 #include "integrate/reflection_clip.h"
 
@@ -74,6 +78,143 @@ constexpr double kDipWidths = 8.0;
 // tan(phi / 4).
 constexpr double kMaxTanHalf = 4.0;
 constexpr double kSplitCos = (1.0 - kMaxTanHalf * kMaxTanHalf) / (1.0 + kMaxTanHalf * kMaxTanHalf);
+
+// What the phi kernels need of a SplitSumIntegrand and its Ring.
+struct PhiConstants {
+    double a1, a0, two_cos_h, scale;  // the Ring
+    double mu_o, alpha2, s, k;        // the integrand
+};
+
+// The phi kernels, one set per instruction set: each does the nodes it can
+// in whole vectors and returns how many (the caller does the rest one at a
+// time).
+struct PhiKernels {
+    int (*circle)(const PhiConstants&, const double* cos_phi, double* y, int n);
+    int (*arc_half)(const PhiConstants&, double a1s, double kj, const double* u, double* y, int n);
+    int (*arc_quarter)(const PhiConstants&, double a1s, double kj, const double* u, double* y, int n);
+};
+
+int no_circle(const PhiConstants&, const double*, double*, int) { return 0; }
+int no_arc(const PhiConstants&, double, double, const double*, double*, int) { return 0; }
+
+#if defined(__SSE2__)
+namespace sse2 {
+struct V {
+    __m128d v;
+    static constexpr int width = 2;
+    static V set1(double x) { return {_mm_set1_pd(x)}; }
+    static V load(const double* p) { return {_mm_loadu_pd(p)}; }
+};
+inline V operator+(V a, V b) { return {_mm_add_pd(a.v, b.v)}; }
+inline V operator-(V a, V b) { return {_mm_sub_pd(a.v, b.v)}; }
+inline V operator*(V a, V b) { return {_mm_mul_pd(a.v, b.v)}; }
+inline V operator/(V a, V b) { return {_mm_div_pd(a.v, b.v)}; }
+inline V sqrt(V a) { return {_mm_sqrt_pd(a.v)}; }
+inline V gt(V a, V b) { return {_mm_cmpgt_pd(a.v, b.v)}; }
+inline V band(V a, V b) { return {_mm_and_pd(a.v, b.v)}; }
+inline V bor(V a, V b) { return {_mm_or_pd(a.v, b.v)}; }
+inline V bandnot(V a, V b) { return {_mm_andnot_pd(a.v, b.v)}; }
+// {a_j, b_j} at y + 2 j for the lanes j.
+inline void store_pairs(double* y, V a, V b) {
+    _mm_storeu_pd(y, _mm_unpacklo_pd(a.v, b.v));
+    _mm_storeu_pd(y + 2, _mm_unpackhi_pd(a.v, b.v));
+}
+#include "integrate/ggx_phi_kernels.inc"
+int circle(const PhiConstants& k, const double* c, double* y, int n) { return circle_kernel(k, c, y, n); }
+template <bool kQuarter>
+int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y, int n) {
+    return arc_kernel<kQuarter>(k, a1s, kj, u, y, n);
+}
+}  // namespace sse2
+#endif
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define BRDFLUT_HAVE_AVX2_KERNELS 1
+// Compiled for AVX2 whatever the target of the build, and called only when
+// the processor has it. AVX2 alone implies no fused multiply-add, so the
+// lanes round exactly as the SSE2 ones.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+namespace avx2 {
+struct V {
+    __m256d v;
+    static constexpr int width = 4;
+    static V set1(double x) { return {_mm256_set1_pd(x)}; }
+    static V load(const double* p) { return {_mm256_loadu_pd(p)}; }
+};
+inline V operator+(V a, V b) { return {_mm256_add_pd(a.v, b.v)}; }
+inline V operator-(V a, V b) { return {_mm256_sub_pd(a.v, b.v)}; }
+inline V operator*(V a, V b) { return {_mm256_mul_pd(a.v, b.v)}; }
+inline V operator/(V a, V b) { return {_mm256_div_pd(a.v, b.v)}; }
+inline V sqrt(V a) { return {_mm256_sqrt_pd(a.v)}; }
+inline V gt(V a, V b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
+inline V band(V a, V b) { return {_mm256_and_pd(a.v, b.v)}; }
+inline V bor(V a, V b) { return {_mm256_or_pd(a.v, b.v)}; }
+inline V bandnot(V a, V b) { return {_mm256_andnot_pd(a.v, b.v)}; }
+inline void store_pairs(double* y, V a, V b) {
+    const __m256d lo = _mm256_unpacklo_pd(a.v, b.v);  // {a0, b0, a2, b2}
+    const __m256d hi = _mm256_unpackhi_pd(a.v, b.v);  // {a1, b1, a3, b3}
+    _mm256_storeu_pd(y, _mm256_permute2f128_pd(lo, hi, 0x20));
+    _mm256_storeu_pd(y + 4, _mm256_permute2f128_pd(lo, hi, 0x31));
+}
+#include "integrate/ggx_phi_kernels.inc"
+// Whole vectors of 4, then a pair of 2 (SSE2 rounding is the same).
+int circle(const PhiConstants& k, const double* c, double* y, int n) {
+    const int i = circle_kernel(k, c, y, n);
+    return i + sse2::circle_kernel(k, c + i, y + 2 * i, n - i);
+}
+template <bool kQuarter>
+int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y, int n) {
+    const int i = arc_kernel<kQuarter>(k, a1s, kj, u, y, n);
+    return i + sse2::arc_kernel<kQuarter>(k, a1s, kj, u + i, y + 2 * i, n - i);
+}
+}  // namespace avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+#endif
+
+PhiKernels pick_phi_kernels(int width) {
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+    if (width >= 4) return {avx2::circle, avx2::arc<false>, avx2::arc<true>};
+#endif
+#if defined(__SSE2__)
+    if (width >= 2) return {sse2::circle, sse2::arc<false>, sse2::arc<true>};
+#endif
+    (void)width;
+    return {no_circle, no_arc, no_arc};
+}
+
+int widest_phi_kernels() {
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2")) return 4;
+#endif
+#if defined(__SSE2__)
+    return 2;
+#else
+    return 1;
+#endif
+}
+
+struct PhiKernelChoice {
+    int width;
+    PhiKernels kernels;
+};
+PhiKernelChoice& phi_kernel_choice() {
+    static PhiKernelChoice c = [] {
+        const int w = widest_phi_kernels();
+        return PhiKernelChoice{w, pick_phi_kernels(w)};
+    }();
+    return c;
+}
+const PhiKernels& phi_kernels() { return phi_kernel_choice().kernels; }
 
 struct SplitSumIntegrand {
     double alpha2;
@@ -124,40 +265,12 @@ struct SplitSumIntegrand {
         return {v - v * fc, v * fc};
     }
 
-    // at at n values of cos(phi); with SSE2 two at a time, by the same
-    // operations in the same order (so bit for bit the same values).
+    // at at n values of cos(phi), several at a time where SIMD is available
+    // (phi_kernels(): the same operations in the same order, so bit for bit
+    // the same values).
     void at_batch(const Ring& q, const double* cos_phi, std::array<double, 2>* y, int n) const {
         int i = 0;
-#if defined(__SSE2__)
-        if (!generic_) {
-            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), zero = _mm_setzero_pd();
-            const __m128d a1 = _mm_set1_pd(q.a1), a0 = _mm_set1_pd(q.a0), tch = _mm_set1_pd(q.two_cos_h);
-            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
-            const __m128d kv = _mm_set1_pd(k), scale = _mm_set1_pd(q.scale);
-            for (; i + 2 <= n; i += 2) {
-                const __m128d o_h = _mm_add_pd(_mm_mul_pd(a1, _mm_loadu_pd(cos_phi + i)), a0);
-                const __m128d mu0 = _mm_sub_pd(_mm_mul_pd(tch, o_h), mo);
-                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(mu0, zero), _mm_cmpgt_pd(o_h, zero));
-                // Lanes outside the hemisphere compute on mu_i = 1 and give 0.
-                const __m128d mu = _mm_or_pd(_mm_and_pd(ok, mu0), _mm_andnot_pd(ok, one));
-                const __m128d mu2 = _mm_mul_pd(mu, mu);
-                const __m128d e = _mm_mul_pd(a2, _mm_sub_pd(one, mu2));
-                const __m128d r = _mm_sqrt_pd(_mm_add_pd(mu2, e));
-                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, mu), _mm_add_pd(r, mu));
-                const __m128d v = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(kv, p), o_h), scale),
-                                             _mm_add_pd(_mm_mul_pd(sv, p), e));
-                const __m128d m = _mm_sub_pd(one, o_h);
-                const __m128d m2 = _mm_mul_pd(m, m);
-                const __m128d vf = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(m2, m2), m)));
-                const __m128d va = _mm_and_pd(ok, _mm_sub_pd(v, vf));
-                alignas(16) double lo[2], hi[2];
-                _mm_store_pd(lo, _mm_unpacklo_pd(va, vf));
-                _mm_store_pd(hi, _mm_unpackhi_pd(va, vf));
-                y[i] = {lo[0], lo[1]};
-                y[i + 1] = {hi[0], hi[1]};
-            }
-        }
-#endif
+        if (!generic_) i = phi_kernels().circle(constants(q), cos_phi, reinterpret_cast<double*>(y), n);
         for (; i < n; ++i) y[i] = at(q, cos_phi[i]);
     }
 
@@ -201,59 +314,21 @@ struct SplitSumIntegrand {
         return {v - b, b};
     }
 
-    // at_arc at n nodes; with SSE2 two at a time, by the same operations in
-    // the same order (so bit for bit the same values).
+    // at_arc at n nodes, several at a time as at_batch.
     template <Arc kind>
     void at_arc_batch(const Ring& r, double sign, const double* u, std::array<double, 2>* y, int n) const {
         int i = 0;
-#if defined(__SSE2__)
         if (!generic_) {
             const ArcConstants a = arc_constants<kind>(r, sign);
-            const __m128d one = _mm_set1_pd(1.0), two = _mm_set1_pd(2.0), six = _mm_set1_pd(6.0);
-            const __m128d zero = _mm_setzero_pd();
-            const __m128d a1s = _mm_set1_pd(a.a1s), a0 = _mm_set1_pd(r.a0), tch = _mm_set1_pd(r.two_cos_h);
-            const __m128d mo = _mm_set1_pd(mu_o), a2 = _mm_set1_pd(alpha2), sv = _mm_set1_pd(s);
-            const __m128d kj = _mm_set1_pd(a.kj);
-            for (; i + 2 <= n; i += 2) {
-                const __m128d x = _mm_loadu_pd(u + i);
-                const __m128d s2 = _mm_mul_pd(x, x);
-                const __m128d q = _mm_add_pd(one, s2);
-                __m128d d, cn;
-                if constexpr (kind == Arc::half) {
-                    d = q;
-                    cn = _mm_sub_pd(one, s2);
-                } else {
-                    d = _mm_mul_pd(q, q);
-                    cn = _mm_add_pd(_mm_sub_pd(one, _mm_mul_pd(six, s2)), _mm_mul_pd(s2, s2));
-                }
-                const __m128d o = _mm_add_pd(_mm_mul_pd(a1s, cn), _mm_mul_pd(a0, d));
-                const __m128d m0 = _mm_sub_pd(_mm_mul_pd(tch, o), _mm_mul_pd(mo, d));
-                const __m128d ok = _mm_and_pd(_mm_cmpgt_pd(m0, zero), _mm_cmpgt_pd(o, zero));
-                // Lanes outside the arc compute on m = 1 (harmless) and give 0.
-                const __m128d m = _mm_or_pd(_mm_and_pd(ok, m0), _mm_andnot_pd(ok, one));
-                const __m128d e = _mm_mul_pd(a2, _mm_mul_pd(_mm_sub_pd(d, m), _mm_add_pd(d, m)));
-                const __m128d rr = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(m, m), e));
-                const __m128d p = _mm_mul_pd(_mm_mul_pd(two, m), _mm_add_pd(rr, m));
-                const __m128d den = _mm_add_pd(_mm_mul_pd(sv, p), e);
-                const __m128d inv = _mm_div_pd(one, _mm_mul_pd(d, den));
-                __m128d v = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(kj, p), o), den), _mm_mul_pd(inv, inv));
-                if constexpr (kind == Arc::quarter) v = _mm_mul_pd(v, q);
-                const __m128d w = _mm_sub_pd(one, _mm_mul_pd(_mm_mul_pd(o, den), inv));
-                const __m128d w2 = _mm_mul_pd(w, w);
-                const __m128d b = _mm_and_pd(ok, _mm_mul_pd(v, _mm_mul_pd(_mm_mul_pd(w2, w2), w)));
-                const __m128d av = _mm_and_pd(ok, _mm_sub_pd(v, b));
-                alignas(16) double lo[2], hi[2];
-                _mm_store_pd(lo, _mm_unpacklo_pd(av, b));  // {A_i, B_i}
-                _mm_store_pd(hi, _mm_unpackhi_pd(av, b));  // {A_i+1, B_i+1}
-                y[i] = {lo[0], lo[1]};
-                y[i + 1] = {hi[0], hi[1]};
-            }
+            const PhiKernels& kernels = phi_kernels();
+            i = (kind == Arc::half ? kernels.arc_half : kernels.arc_quarter)(constants(r), a.a1s, a.kj, u,
+                                                                            reinterpret_cast<double*>(y), n);
         }
-#endif
         for (; i < n; ++i) y[i] = at_arc<kind>(r, sign, u[i]);
     }
 
 private:
+    PhiConstants constants(const Ring& q) const { return {q.a1, q.a0, q.two_cos_h, q.scale, mu_o, alpha2, s, k}; }
     struct ArcConstants {
         double a1s;  // a1 sign
         double kj;   // k scale times 2 (half) or 4 (quarter)
@@ -286,6 +361,17 @@ struct ArcIntegrand {
 
 
 }  // namespace
+
+namespace detail {
+int ggx_phi_simd_width() { return phi_kernel_choice().width; }
+int set_ggx_phi_simd_width(int width) {
+    PhiKernelChoice& c = phi_kernel_choice();
+    c.width = std::min(std::max(width, 1), widest_phi_kernels());
+    if (c.width == 3) c.width = 2;
+    c.kernels = pick_phi_kernels(c.width);
+    return c.width;
+}
+}  // namespace detail
 
 Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_tol) {
     Estimate<2> out;
@@ -331,9 +417,10 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     // integrand is smooth, even and 2 pi periodic in phi, so the trapezoidal
     // rule converges exponentially; double the nodes until two successive
     // sums agree.
+    int evaluations = 0;  // of the phi integrand, in every inner integral
     auto full_circle = [&](double t, double tol) -> std::array<double, 3> {
         const SplitSumIntegrand::Ring q = f.ring(t);
-        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol);
+        return detail::trapezoid_half_circle<2>(CircleIntegrand{f, q}, tol, &evaluations);
     };
 
     // Integral over phi in [0, phi_max], cos(phi_max) = c in (-1, 1), at
@@ -351,6 +438,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         std::array<double, 3> r{};
         auto add = [&](auto integrand, double s0, double s1) {
             const Estimate<2> in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
+            evaluations += in.evaluations;
             r[0] += in.value[0];
             r[1] += in.value[1];
             r[2] += in.error[0] + in.error[1];
@@ -405,7 +493,6 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             out.value[c] += e.value[c];
             out.error[c] += e.error[c] + e.value[2];
         }
-        out.evaluations += e.evaluations;
     };
 
     // Full circle for t <= t_a (normal incidence: t_a = 1, nothing beyond).
@@ -464,6 +551,7 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
             },
             0.0, 1.0, panels, outer_opt));
     }
+    out.evaluations = evaluations;
     return out;
 }
 
@@ -491,12 +579,12 @@ Estimate<1> ggx_albedo_average(double alpha, Visibility vis, double abs_tol) {
         const double budget = 0.25 * abs_tol / span;
         const double tol = w * kMaxNestedTol > budget ? budget / w : kMaxNestedTol;
         const Estimate<2> s = ggx_split_sum(mu, alpha, vis, tol);
+        out.evaluations += s.evaluations;
         return {w * (s.value[0] + s.value[1]), w * (s.error[0] + s.error[1])};
     };
     auto accumulate = [&](const Estimate<2>& e) {
         out.value[0] += e.value[0];
         out.error[0] += e.error[0] + e.value[1];
-        out.evaluations += e.evaluations;
     };
     const double b = std::min(alpha, 1.0);
     accumulate(integrate_adaptive<2>(

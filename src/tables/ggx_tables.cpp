@@ -55,18 +55,29 @@ enum class Kind { dfg, albedo, albedo_avg };
 // contention low; bounded (beyond the bound, values are simply recomputed).
 class SplitSumCache {
 public:
-    Estimate<2> get(double mu, double alpha, Visibility vis, double tol) {
+    // The split sum; *computed tells whether this call computed it (false:
+    // taken from an earlier call).
+    Estimate<2> get(double mu, double alpha, Visibility vis, double tol, bool* computed) {
         const Key key{mu, alpha, tol, vis};
         Shard& shard = shards_[KeyHash{}(key) % kShards];
+        *computed = false;
         {
             const std::lock_guard<std::mutex> lock(shard.mutex);
             const auto it = shard.map.find(key);
             if (it != shard.map.end()) return it->second;
         }
+        *computed = true;
         const Estimate<2> e = ggx_split_sum(mu, alpha, vis, tol);
         const std::lock_guard<std::mutex> lock(shard.mutex);
         if (shard.map.size() < kMaxPerShard) shard.map.emplace(key, e);
         return e;
+    }
+
+    void clear() {
+        for (Shard& shard : shards_) {
+            const std::lock_guard<std::mutex> lock(shard.mutex);
+            shard.map.clear();
+        }
     }
 
 private:
@@ -121,11 +132,14 @@ public:
                                      : ggx_albedo_average(alpha, vis_, abs_tol_);
             out.value[0] = e.value[0];
             out.error[0] = mc ? tables::kMcErrorSigmas * e.error[0] : e.error[0];
+            out.evaluations = e.evaluations;
             return out;
         }
         const double mu = c[0], alpha = c[1];
+        bool computed = true;
         const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
-                                 : split_sum_cache().get(mu, alpha, vis_, abs_tol_);
+                                 : split_sum_cache().get(mu, alpha, vis_, abs_tol_, &computed);
+        if (computed) out.evaluations = e.evaluations;
         const double scale = mc ? tables::kMcErrorSigmas : 1.0;
         if (kind_ == Kind::dfg) {
             out.value = {e.value[0], e.value[1], 0.0, 0.0};
@@ -170,6 +184,8 @@ TableDefinition make(Kind kind, std::string id, std::string description,
 }
 
 }  // namespace
+
+void clear_shared_results() { split_sum_cache().clear(); }
 
 void register_ggx_tables(std::vector<TableDefinition>& out) {
     using namespace tables;

@@ -44,6 +44,7 @@ public:
                 const Estimate<1> cloth = sheen(c[0], alpha, seed);
                 out.value = {s.value[1], s.value[0] + s.value[1], cloth.value[0], 0.0};
                 out.error = {s.error[1], s.error[0] + s.error[1], cloth.error[0], 0.0};
+                out.evaluations = s.evaluations + cloth.evaluations;
                 break;
             }
             case Kind::unreal_dfg:
@@ -53,6 +54,7 @@ public:
                 const Estimate<2> s = split(c[0], alpha_from_perceptual(c[1]), vis, seed);
                 out.value = {s.value[0], s.value[1], 0.0, 0.0};
                 out.error = {s.error[0], s.error[1], 0.0, 0.0};
+                out.evaluations = s.evaluations;
                 break;
             }
             case Kind::hdrp_fgd: {
@@ -62,12 +64,14 @@ public:
                                                         tolerance(kLobeAbsTolerance));
                 out.value = {s.value[1], s.value[0] + s.value[1], d.value[0] - 0.5, 0.0};
                 out.error = {s.error[1], s.error[0] + s.error[1], scale() * d.error[0], 0.0};
+                out.evaluations = s.evaluations + d.evaluations;
                 break;
             }
             case Kind::cycles_ggx_e: {
                 const Estimate<2> s = split(c[1], c[0], Visibility::height_correlated, seed);
                 out.value[0] = s.value[0] + s.value[1];
                 out.error[0] = s.error[0] + s.error[1];
+                out.evaluations = s.evaluations;
                 break;
             }
             case Kind::cycles_ggx_e_avg: {
@@ -76,12 +80,14 @@ public:
                                                                tolerance(kGgxAbsTolerance));
                 out.value[0] = e.value[0];
                 out.error[0] = scale() * e.error[0];
+                out.evaluations = e.evaluations;
                 break;
             }
             case Kind::gltf_charlie: {
                 const Estimate<1> cloth = sheen(c[0], alpha_from_perceptual(c[1]), seed);
                 out.value[2] = cloth.value[0];
                 out.error[2] = cloth.error[0];
+                out.evaluations = cloth.evaluations;
                 break;
             }
         }

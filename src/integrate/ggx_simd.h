@@ -1,0 +1,14 @@
+// Which SIMD width ggx_split_sum evaluates its phi integrands with: 4 (AVX2,
+// when the processor has it), 2 (SSE2) or 1 (one node at a time). Every width
+// computes the same operations in the same order, so the values are the same
+// bits whatever it is; tests set it to check exactly that.
+#pragma once
+
+namespace brdflut::detail {
+
+int ggx_phi_simd_width();
+// Uses at most `width` lanes (never more than the processor has); returns
+// the width now in use. Not thread-safe: call while no split sum runs.
+int set_ggx_phi_simd_width(int width);
+
+}  // namespace brdflut::detail
