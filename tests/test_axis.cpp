@@ -283,13 +283,19 @@ TEST(Compare, ASourceArrayIsHeldToItsPrintedDigitsAndCyclesGgxEPassesInItsLayout
     TempDir dir;
     {
         std::ofstream f(dir / "t.c");
-        f << "const float t[3] = {0.5f, 0.25, 1.5e-3};\n";
+        f << "const float t[3] = {0.5000f, 0.2500, 1.0000};\n";
+        f << "const float u[3] = {0.5f, 0.25, 1.0};\n";
+        f << "const float w[3] = {0.5000f, 0.2500, 1.5e-3};\n";
     }
     ReadOptions o;
     o.array = "t";
     const ExrImage img = read_table_image(dir / "t.c", o);
     EXPECT_DOUBLE_EQ(img.printed_step, 1e-4);
     EXPECT_DOUBLE_EQ(storage_step(img, 0.5), 1e-4);
+    o.array = "u";  // shortest digits: the values are taken as floats
+    EXPECT_EQ(read_table_image(dir / "t.c", o).printed_step, 0.0);
+    o.array = "w";
+    EXPECT_EQ(read_table_image(dir / "t.c", o).printed_step, 0.0);
     // Cycles' ggx_E, printed with 6 decimals, read in Cycles' layout: within
     // one unit of its last digit everywhere; without the clamp of mu it fails.
     const std::string cycles = std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/cycles/shader.tables";

@@ -28,8 +28,9 @@ struct ExrImage {
     PixelType pixel = PixelType::float32;
     bool unorm16 = false;  // 16-bit integers v * 65535 (png16); pixels holds them as v
     bool unorm8 = false;   // 8-bit integers v * 255 (PNG, npy u1); pixels holds them as v
-    // Numbers printed in a source file: the unit of the last printed digit
-    // (the smallest over the array, e.g. 1e-6 for "0.998773f"); 0 otherwise.
+    // Numbers printed in a source file in fixed point, all with the same
+    // count of decimals: the unit of the last digit (1e-6 for "0.998773f");
+    // 0 otherwise.
     double printed_step = 0.0;
     bool has_metadata = false;
     nlohmann::json metadata;

@@ -167,22 +167,16 @@ bool number_value(std::string_view t, double& v) {
     return true;
 }
 
-// The unit of a decimal number's last printed digit: 1e-6 for "0.998773f",
-// 1e-4 for "1.5e-3"; infinite for a hex number.
-double printed_step(std::string_view t) {
-    if (t.size() > 1 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) return HUGE_VAL;
-    const std::size_t e = t.find_first_of("eE");
-    const std::string_view mantissa = t.substr(0, e);
-    const std::size_t dot = mantissa.find('.');
+// The count of digits after the point of a number printed in fixed point
+// ("0.998773f": 6), or -1 for one with an exponent or in hex.
+int fixed_decimals(std::string_view t) {
+    if (t.size() > 1 && t[0] == '0' && (t[1] == 'x' || t[1] == 'X')) return -1;
+    if (t.find_first_of("eE") != std::string_view::npos) return -1;
+    const std::size_t dot = t.find('.');
     int decimals = 0;
     if (dot != std::string_view::npos)
-        for (std::size_t i = dot + 1; i < mantissa.size() && digit(mantissa[i]); ++i) ++decimals;
-    long exponent = 0;
-    if (e != std::string_view::npos) {
-        std::from_chars(t.data() + e + 1 + (e + 1 < t.size() && t[e + 1] == '+'), t.data() + t.size(), exponent);
-        exponent = std::clamp(exponent, -400L, 400L);
-    }
-    return std::pow(10.0, static_cast<double>(exponent - decimals));
+        for (std::size_t i = dot + 1; i < t.size() && digit(t[i]); ++i) ++decimals;
+    return decimals;
 }
 
 // Vector element types: their component count, else 0.
@@ -238,16 +232,18 @@ public:
         return s;
     }
 
-    // The smallest unit of the last printed digit over the numbers read (the
-    // resolution the array was printed with); infinite when none is decimal.
-    double step() const { return step_; }
+    // The unit of the last printed digit when every number was printed in
+    // fixed point with the same count of decimals (as printf's "%.6f"), the
+    // resolution the array was printed with; 0 otherwise (shortest digits,
+    // exponents, mixed counts), when the values are taken as floats.
+    double step() const { return decimals_ > 0 ? std::pow(10.0, -decimals_) : 0.0; }
 
 private:
     Lexer& lex_;
     const std::string& file_;
     const std::string& array_;
     std::vector<double>& out_;
-    double step_ = HUGE_VAL;
+    int decimals_ = -2;  // -2: no number yet; -1: not one fixed count
 
     static std::string describe(const Token& t) {
         if (t.kind == Tok::end) return "the end of the file";
@@ -275,7 +271,10 @@ private:
         if (static_cast<long long>(out_.size()) >= kMaxImageValues)
             fail(t.line, "holds more than the " + std::to_string(kMaxImageValues) + " values of the largest image");
         out_.push_back(sign * v);
-        step_ = std::min(step_, printed_step(t.text));
+        // Fixed-point printing: every number with the same count of decimals.
+        const int d = fixed_decimals(t.text);
+        if (decimals_ == -2) decimals_ = d;
+        else if (decimals_ != d) decimals_ = -1;
         return {};
     }
 };
@@ -428,7 +427,7 @@ ExrImage read_source_array(const char* data, std::size_t size, const std::string
             throw fail("array '" + want + "': " + why);
         img.pixel = PixelType::float32;
         img.pixels = std::move(values);
-        img.printed_step = std::isfinite(parser_step) ? parser_step : 0.0;
+        img.printed_step = parser_step;
         return img;
     }
     std::string list;
