@@ -1,0 +1,284 @@
+// GLSL and HLSL lookup functions (include/brdflut/shader.h).
+//
+// The generated function follows the axis functions of the library step by
+// step, so that it computes what sample_lut() computes:
+//   1. v = clamp(parameter, axis range): the value the texels cover
+//      (sample clamps the texel position to [0, count - 1], the same thing
+//      for a monotonic warp);
+//   2. u = the inverse warp of v (the warp's shader expression);
+//   3. position = u count - 0.5 (center) or u (count - 1) (endpoints),
+//      count - 1 - position when the axis is stored flipped;
+//   4. texture coordinate = (position + 0.5) / count, simplified per case;
+//   5. the hardware's linear filter with clamp-to-edge addressing.
+#include "brdflut/shader.h"
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/error.h"
+#include "brdflut/formats.h"
+#include "brdflut/version.h"
+#include "io/binary.h"
+#include "io/table_writers.h"
+
+namespace brdflut {
+namespace {
+
+// A float literal valid in GLSL and HLSL that reads back as the same float
+// as the value does: the shortest digits, with a '.' or exponent.
+std::string literal(double value) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, static_cast<float>(value)).ptr;
+    std::string s(buf, end);
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    if (s.find_first_of("eE") != std::string::npos && s.find('.') == std::string::npos) {
+        const std::size_t e = s.find_first_of("eE");
+        s.insert(e, ".0");
+    }
+    return s;
+}
+
+// Words of GLSL or HLSL that a parameter or member must not be named.
+bool reserved(const std::string& s) {
+    static const std::set<std::string> words = {
+        "input", "output", "sample", "filter", "common", "partition", "active", "half", "fixed", "texture",
+        "sampler", "lut", "lut_sampler", "in", "out", "inout", "float", "int", "uint", "bool", "vec2", "vec3",
+        "vec4", "float2", "float3", "float4", "matrix", "vector", "line", "point", "triangle", "precise",
+        "shared", "packed", "register", "static", "const", "uniform", "buffer", "struct", "return", "x", "y",
+        "z", "texel", "result", "not", "and", "or"};
+    return words.count(s) > 0 || s.rfind("gl_", 0) == 0;
+}
+
+// An identifier from free text: letters, digits and single '_'.
+std::string identifier(std::string_view text) {
+    std::string id;
+    for (const char ch : text) {
+        const bool ok = std::isalnum(static_cast<unsigned char>(ch)) && static_cast<unsigned char>(ch) < 0x80;
+        const char c = ok ? ch : '_';
+        if (c == '_' && (id.empty() || id.back() == '_')) continue;
+        id += c;
+    }
+    while (!id.empty() && id.back() == '_') id.pop_back();
+    if (!id.empty() && std::isdigit(static_cast<unsigned char>(id.front()))) id = "c_" + id;
+    return id;
+}
+
+// Member names: the symbol before the ':' of each channel's description
+// ("A: integral of ..." -> A, "F_avg(1/eta): ..." -> F_avg_1_eta); the
+// channel letter where there is none, or where two channels would clash.
+std::vector<std::string> field_names(const Table& t) {
+    static const char* kLetters[4] = {"R", "G", "B", "A"};
+    std::vector<std::string> names;
+    for (const std::string& c : t.channels) {
+        const std::size_t colon = c.find(':');
+        names.push_back(colon == std::string::npos || colon > 24 ? "" : identifier(c.substr(0, colon)));
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        bool clash = names[i].empty() || reserved(names[i]);
+        for (std::size_t j = 0; j < names.size(); ++j)
+            if (j != i && names[j] == names[i]) clash = true;
+        if (clash) names[i] = "";
+    }
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i].empty()) names[i] = kLetters[i];
+    return names;
+}
+
+std::string parameter_name(const std::string& axis) {
+    const std::string id = identifier(axis);
+    return reserved(id) ? id + "_value" : id;
+}
+
+// The inverse of each warp as one expression of v (the clamped parameter),
+// lo (axis min) and hi (axis max), valid in GLSL and HLSL.
+std::string warp_shader_u(Warp w) {
+    switch (w) {
+        case Warp::linear: return "(v - lo) / (hi - lo)";
+        case Warp::square: return "sqrt(max((v - lo) / (hi - lo), 0.0))";
+        case Warp::sqrt: return "((v - lo) / (hi - lo)) * ((v - lo) / (hi - lo))";
+        case Warp::log: return "log(v / lo) / log(hi / lo)";
+    }
+    return "(v - lo) / (hi - lo)";
+}
+std::string warp_formula(Warp w) {
+    switch (w) {
+        case Warp::linear: return "value = lo + (hi - lo) u";
+        case Warp::square: return "value = lo + (hi - lo) u^2";
+        case Warp::sqrt: return "value = lo + (hi - lo) sqrt(u)";
+        case Warp::log: return "value = lo (hi / lo)^u";
+    }
+    return "";
+}
+
+// Replaces whole identifiers v, lo, hi of an expression.
+std::string substitute(const std::string& expr, const std::string& v, const std::string& lo, const std::string& hi) {
+    std::string out;
+    for (std::size_t i = 0; i < expr.size();) {
+        const unsigned char c = static_cast<unsigned char>(expr[i]);
+        if (std::isalpha(c) || c == '_') {
+            std::size_t j = i;
+            while (j < expr.size() && (std::isalnum(static_cast<unsigned char>(expr[j])) || expr[j] == '_')) ++j;
+            const std::string word = expr.substr(i, j - i);
+            out += word == "v" ? v : word == "lo" ? lo : word == "hi" ? hi : word;
+            i = j;
+        } else {
+            out += expr[i++];
+        }
+    }
+    return out;
+}
+
+// The definition's order of the parameters (the function's signature does
+// not change when a table is stored transposed).
+std::vector<std::string> parameter_axes(const Table& t) {
+    std::vector<std::string> names;
+    try {
+        for (const AxisSpec& s : find_table(t.id).axes) names.push_back(s.axis.name);
+    } catch (const Error&) {
+        names.clear();
+    }
+    if (names.size() != t.axes.size()) {
+        names.clear();
+        for (const Axis& a : t.axes) names.push_back(a.name);
+    }
+    return names;
+}
+
+std::string format_name(Storage s, int channels) {
+    const int stored = gpu_stored_channels(channels);
+    const char* rgba[4] = {"R", "RG", "RGBA", "RGBA"};
+    const std::string letters = stored == 4 ? rgba[2] : rgba[stored - 1];
+    switch (s) {
+        case Storage::half: return letters + "16F (VK_FORMAT_" + (stored == 1 ? "R16" : stored == 2 ? "R16G16" : "R16G16B16A16") + "_SFLOAT)";
+        case Storage::float32: return letters + "32F (VK_FORMAT_" + (stored == 1 ? "R32" : stored == 2 ? "R32G32" : "R32G32B32A32") + "_SFLOAT)";
+        case Storage::unorm16: return letters + "16 UNORM (16-bit PNG)";
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string_view to_string(ShaderLanguage l) { return l == ShaderLanguage::glsl ? "glsl" : "hlsl"; }
+
+ShaderLanguage shader_language_from_string(std::string_view s) {
+    if (s == "glsl") return ShaderLanguage::glsl;
+    if (s == "hlsl") return ShaderLanguage::hlsl;
+    throw Error("shader language '" + std::string(s) + "' is not known; allowed: glsl, hlsl");
+}
+
+std::string shader_extension(ShaderLanguage l) { return std::string(to_string(l)); }
+
+ShaderInterface shader_interface(const Table& t) {
+    ShaderInterface si;
+    const std::string id = cpp_identifier(t.id);
+    si.function = "brdflut_" + id;
+    si.result_type = "brdflut_" + id + "_value";
+    for (const std::string& a : parameter_axes(t)) si.parameters.push_back(parameter_name(a));
+    si.fields = field_names(t);
+    si.dimensions = t.axes.size() > 2 ? 3 : 2;
+    return si;
+}
+
+std::string metadata_hash(const Table& t, Storage s) {
+    const std::string json = metadata_json(t, s).dump();
+    std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64: offset basis
+    for (const char c : json) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ull;  // FNV prime
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) {
+    if (t.axes.empty() || t.axes.size() > 3 || t.channels.empty() || t.channels.size() > 4)
+        throw Error("table '" + t.id + "' has " + std::to_string(t.axes.size()) + " axes and " +
+                    std::to_string(t.channels.size()) + " channels; a shader lookup needs 1 to 3 and 1 to 4");
+    const bool glsl = lang == ShaderLanguage::glsl;
+    const ShaderInterface si = shader_interface(t);
+    static const char* kCoord[3] = {"x", "y", "z"};
+    static const char* kComponent[4] = {"r", "g", "b", "a"};
+    std::ostringstream o;
+
+    // Header: what the function reads and how to match it with its table.
+    o << "// " << si.function << ": lookup of brdflut table '" << t.id << "' (" << kName << " " << kVersion << ").\n"
+      << "// Generated with the table; do not edit. Matches the table file whose metadata hash is\n"
+      << "//   metadata fnv1a64 " << metadata_hash(t, storage) << "\n"
+      << "// = FNV-1a 64-bit of the bytes of the metadata JSON as stored in the file (KTX2 key\n"
+      << "// 'brdflut', EXR attribute 'brdflut', PNG iTXt 'brdflut', C++ header metadata[]).\n"
+      << "//\n"
+      << "// Texture: " << (si.dimensions == 3 ? "3-D, " : "2-D, ") << t.axes[0].count << " x "
+      << (t.axes.size() > 1 ? t.axes[1].count : 1);
+    if (t.axes.size() > 2) o << " x " << t.axes[2].count;
+    o << " texels, " << format_name(storage, t.channel_count()) << ";\n"
+      << "// sampler: linear filter, clamp to edge on every axis, one mip level (none generated).\n";
+    if (si.dimensions == 3)
+        o << "// The files store the z slices stacked as rows (row = z * count_y + y): the same bytes\n"
+          << "// uploaded as a width x count_y x count_z 3-D texture.\n";
+    o << "// Texture coordinate of an axis: (position + 0.5) / count, position = u count - 0.5\n"
+      << "// (placement center) or u (count - 1) (endpoints), count - 1 - position when flipped,\n"
+      << "// u the inverse warp of the parameter clamped to the axis' range.\n\n";
+
+    // Result struct.
+    o << "struct " << si.result_type << " {\n";
+    for (std::size_t c = 0; c < si.fields.size(); ++c)
+        o << "    float " << si.fields[c] << ";  // " << kComponent[c] << ": " << t.channels[c] << "\n";
+    o << "};\n\n";
+
+    // Signature.
+    const std::string tex = glsl ? (si.dimensions == 3 ? "sampler3D lut" : "sampler2D lut")
+                                 : (si.dimensions == 3 ? "Texture3D<float4> lut, SamplerState lut_sampler"
+                                                       : "Texture2D<float4> lut, SamplerState lut_sampler");
+    o << si.result_type << " " << si.function << "(" << tex;
+    for (const std::string& p : si.parameters) o << ", float " << p;
+    o << ")\n{\n";
+
+    // One block per stored axis, in storage order.
+    for (std::size_t a = 0; a < t.axes.size(); ++a) {
+        const Axis& ax = t.axes[a];
+        const std::string p = parameter_name(ax.name);
+        const std::string lo = p + "_lo", hi = p + "_hi", v = p + "_v", u = p + "_u";
+        const double range_lo = std::min(ax.min, ax.max), range_hi = std::max(ax.min, ax.max);
+        o << "    // " << kCoord[a] << ": " << ax.name << " over [" << literal(ax.min) << ", " << literal(ax.max)
+          << "], " << ax.count << " texels, placement " << to_string(ax.placement) << ", warp "
+          << to_string(ax.warp) << ": " << warp_formula(ax.warp) << "\n";
+        o << "    const float " << lo << " = " << literal(ax.min) << ";\n";
+        o << "    const float " << hi << " = " << literal(ax.max) << ";\n";
+        o << "    float " << v << " = clamp(" << p << ", " << literal(range_lo) << ", " << literal(range_hi)
+          << ");\n";
+        o << "    float " << u << " = " << substitute(warp_shader_u(ax.warp), v, lo, hi) << ";  // inverse warp\n";
+        o << "    float " << kCoord[a] << " = ";
+        if (ax.placement == Placement::center) {
+            o << u << ";  // center: ((u count - 0.5) + 0.5) / count = u\n";
+        } else {
+            o << "(" << u << " * " << literal(ax.count - 1) << " + 0.5) / " << literal(ax.count)
+              << ";  // endpoints: (u (count - 1) + 0.5) / count\n";
+        }
+        o << "\n";
+    }
+    std::string coords;
+    for (std::size_t a = 0; a < t.axes.size(); ++a) coords += std::string(a ? ", " : "") + kCoord[a];
+    if (t.axes.size() == 1) coords += ", 0.5";  // a one-axis table is a texture of height 1
+    const std::string vec = glsl ? (si.dimensions == 3 ? "vec3" : "vec2") : (si.dimensions == 3 ? "float3" : "float2");
+    if (glsl)
+        o << "    vec4 texel = textureLod(lut, " << vec << "(" << coords << "), 0.0);\n";
+    else
+        o << "    float4 texel = lut.SampleLevel(lut_sampler, " << vec << "(" << coords << "), 0.0);\n";
+    o << "    " << si.result_type << " result;\n";
+    for (std::size_t c = 0; c < si.fields.size(); ++c)
+        o << "    result." << si.fields[c] << " = texel." << kComponent[c] << ";\n";
+    o << "    return result;\n}\n";
+    return o.str();
+}
+
+void write_shader(const std::string& path, const Table& table, Storage storage, ShaderLanguage language) {
+    write_file_atomically(path, shader_source(table, storage, language));
+}
+
+}  // namespace brdflut
