@@ -66,9 +66,30 @@ Texture read_ktx2(const std::string& path) {
     if (length != want || offset + length > b.size())
         throw std::runtime_error("'" + path + "': level 0 holds " + std::to_string(length) + " bytes, expected " +
                                  std::to_string(want));
+    // Key/value data: entries of keyAndValueByteLength, key, NUL, value, padding.
+    const std::uint32_t kvd = load<std::uint32_t>(b, 56), kvd_length = load<std::uint32_t>(b, 60);
+    for (std::size_t at = kvd; at + 4 <= std::size_t{kvd} + kvd_length;) {
+        const std::uint32_t n = load<std::uint32_t>(b, at);
+        if (at + 4 + n > b.size()) throw std::runtime_error("'" + path + "': key/value data is truncated");
+        const std::string entry = b.substr(at + 4, n);
+        const std::size_t nul = entry.find('\0');
+        if (nul != std::string::npos && entry.substr(0, nul) == "brdflut") {
+            t.metadata = entry.substr(nul + 1);
+            if (!t.metadata.empty() && t.metadata.back() == '\0') t.metadata.pop_back();
+        }
+        at += 4 + (n + 3) / 4 * 4;
+    }
     t.texels.assign(b.begin() + static_cast<std::ptrdiff_t>(offset),
                     b.begin() + static_cast<std::ptrdiff_t>(offset + length));
     return t;
+}
+
+std::string fnv1a64_hex(const std::string& bytes) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (const char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
 }
 
 std::vector<std::uint32_t> compile_compute(const std::string& glslang, const std::string& source, bool hlsl,
@@ -116,14 +137,16 @@ struct Runner::Impl {
 
     Buffer make_buffer(VkDeviceSize size, VkBufferUsageFlags usage) {
         Buffer b;
-        VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        VkBufferCreateInfo info{};
+        info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
         info.size = size;
         info.usage = usage;
         info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
         check(vkCreateBuffer(device, &info, nullptr, &b.buffer), "vkCreateBuffer");
         VkMemoryRequirements req;
         vkGetBufferMemoryRequirements(device, b.buffer, &req);
-        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        VkMemoryAllocateInfo alloc{};
+        alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
         alloc.allocationSize = req.size;
         alloc.memoryTypeIndex =
             memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
@@ -141,10 +164,12 @@ struct Runner::Impl {
 
 Runner::Runner() : impl_(std::make_unique<Impl>()) {
     Impl& v = *impl_;
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    VkApplicationInfo app{};
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
     app.pApplicationName = "brdflut shader tests";
     app.apiVersion = VK_API_VERSION_1_1;
-    VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    VkInstanceCreateInfo ici{};
+    ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     ici.pApplicationInfo = &app;
     const VkResult r = vkCreateInstance(&ici, nullptr, &v.instance);
     if (r != VK_SUCCESS)
@@ -180,11 +205,13 @@ Runner::Runner() : impl_(std::make_unique<Impl>()) {
         if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) v.queue_family = i, found = true;
     if (!found) throw std::runtime_error("lavapipe has no compute queue");
     const float priority = 1.0f;
-    VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    VkDeviceQueueCreateInfo qci{};
+    qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
     qci.queueFamilyIndex = v.queue_family;
     qci.queueCount = 1;
     qci.pQueuePriorities = &priority;
-    VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    VkDeviceCreateInfo dci{};
+    dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
     check(vkCreateDevice(v.physical, &dci, nullptr, &v.device), "vkCreateDevice");
@@ -225,6 +252,9 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
         VkDescriptorPool pool = VK_NULL_HANDLE;
         VkCommandPool commands = VK_NULL_HANDLE;
         VkFence fence = VK_NULL_HANDLE;
+        Objects(VkDevice d, Impl* i) : dev(d), impl(i) {}
+        Objects(const Objects&) = delete;
+        Objects& operator=(const Objects&) = delete;
         ~Objects() {
             if (fence) vkDestroyFence(dev, fence, nullptr);
             if (commands) vkDestroyCommandPool(dev, commands, nullptr);
@@ -241,12 +271,13 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
             impl->destroy(in);
             impl->destroy(staging);
         }
-    } o{dev, &v, {}, {}, {}};
+    } o(dev, &v);
 
     // The texture: optimal tiling, filled from a staging buffer.
     o.staging = v.make_buffer(tex.texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
     std::memcpy(o.staging.mapped, tex.texels.data(), tex.texels.size());
-    VkImageCreateInfo ii{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    VkImageCreateInfo ii{};
+    ii.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     ii.imageType = tex.is_3d ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
     ii.format = format;
     ii.extent = {tex.width, tex.height, tex.depth};
@@ -259,19 +290,23 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
     check(vkCreateImage(dev, &ii, nullptr, &o.image), "vkCreateImage");
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(dev, o.image, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    VkMemoryAllocateInfo alloc{};
+    alloc.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = v.memory_type(req.memoryTypeBits, 0);
     check(vkAllocateMemory(dev, &alloc, nullptr, &o.image_memory), "vkAllocateMemory");
     check(vkBindImageMemory(dev, o.image, o.image_memory, 0), "vkBindImageMemory");
-    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    VkImageViewCreateInfo vi{};
+    vi.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     vi.image = o.image;
     vi.viewType = tex.is_3d ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
     vi.format = format;
     vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     check(vkCreateImageView(dev, &vi, nullptr, &o.view), "vkCreateImageView");
 
-    VkSamplerCreateInfo si{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    VkSamplerCreateInfo si{};
+
+    si.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
     si.magFilter = VK_FILTER_LINEAR;
     si.minFilter = VK_FILTER_LINEAR;
     si.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
@@ -296,23 +331,28 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
         {3, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
         {4, VK_DESCRIPTOR_TYPE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
-    VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    VkDescriptorSetLayoutCreateInfo dl{};
+    dl.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
     dl.bindingCount = 5;
     dl.pBindings = bindings;
     check(vkCreateDescriptorSetLayout(dev, &dl, nullptr, &o.set_layout), "vkCreateDescriptorSetLayout");
     const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, 4};
-    VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    VkPipelineLayoutCreateInfo pl{};
+    pl.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
     pl.setLayoutCount = 1;
     pl.pSetLayouts = &o.set_layout;
     pl.pushConstantRangeCount = 1;
     pl.pPushConstantRanges = &push;
     check(vkCreatePipelineLayout(dev, &pl, nullptr, &o.pipeline_layout), "vkCreatePipelineLayout");
-    VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    VkShaderModuleCreateInfo smi{};
+    smi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
     smi.codeSize = spirv.size() * 4;
     smi.pCode = spirv.data();
     check(vkCreateShaderModule(dev, &smi, nullptr, &o.module), "vkCreateShaderModule");
-    VkComputePipelineCreateInfo cpi{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    cpi.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    VkComputePipelineCreateInfo cpi{};
+    cpi.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+    cpi.stage = {};
+    cpi.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     cpi.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     cpi.stage.module = o.module;
     cpi.stage.pName = "main";
@@ -323,12 +363,14 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
                                            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
                                            {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, 1},
                                            {VK_DESCRIPTOR_TYPE_SAMPLER, 1}};
-    VkDescriptorPoolCreateInfo dpi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    VkDescriptorPoolCreateInfo dpi{};
+    dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     dpi.maxSets = 1;
     dpi.poolSizeCount = 4;
     dpi.pPoolSizes = sizes;
     check(vkCreateDescriptorPool(dev, &dpi, nullptr, &o.pool), "vkCreateDescriptorPool");
-    VkDescriptorSetAllocateInfo dsa{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    VkDescriptorSetAllocateInfo dsa{};
+    dsa.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
     dsa.descriptorPool = o.pool;
     dsa.descriptorSetCount = 1;
     dsa.pSetLayouts = &o.set_layout;
@@ -338,7 +380,8 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
     const VkDescriptorBufferInfo in_info{o.in.buffer, 0, VK_WHOLE_SIZE}, out_info{o.out.buffer, 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet w[5];
     for (int i = 0; i < 5; ++i) {
-        w[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w[i] = {};
+        w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         w[i].dstSet = set;
         w[i].dstBinding = static_cast<std::uint32_t>(i);
         w[i].descriptorCount = 1;
@@ -350,20 +393,25 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
     vkUpdateDescriptorSets(dev, 5, w, 0, nullptr);
 
     // Commands: upload, transition, dispatch, make the results visible.
-    VkCommandPoolCreateInfo cp{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    VkCommandPoolCreateInfo cp{};
+    cp.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
     cp.queueFamilyIndex = v.queue_family;
     check(vkCreateCommandPool(dev, &cp, nullptr, &o.commands), "vkCreateCommandPool");
-    VkCommandBufferAllocateInfo cba{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    VkCommandBufferAllocateInfo cba{};
+    cba.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
     cba.commandPool = o.commands;
     cba.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     cba.commandBufferCount = 1;
     VkCommandBuffer cmd;
     check(vkAllocateCommandBuffers(dev, &cba, &cmd), "vkAllocateCommandBuffers");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
 
-    VkImageMemoryBarrier to_dst{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    VkImageMemoryBarrier to_dst{};
+
+    to_dst.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
     to_dst.srcAccessMask = 0;
     to_dst.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     to_dst.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -389,16 +437,20 @@ std::vector<float> Runner::run(const Texture& tex, const std::vector<std::uint32
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, o.pipeline_layout, 0, 1, &set, 0, nullptr);
     vkCmdPushConstants(cmd, o.pipeline_layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, 4, &count);
     vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
-    VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    VkMemoryBarrier to_host{};
+    to_host.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
     to_host.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
     to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0,
                          nullptr, 0, nullptr);
     check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 
-    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFenceCreateInfo fi{};
+
+    fi.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
     check(vkCreateFence(dev, &fi, nullptr, &o.fence), "vkCreateFence");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &cmd;
     check(vkQueueSubmit(v.queue, 1, &submit, o.fence), "vkQueueSubmit");

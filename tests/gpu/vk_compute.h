@@ -29,11 +29,16 @@ struct Texture {
     std::uint32_t width = 0, height = 1, depth = 1;
     bool is_3d = false;           // KTX2 pixelDepth > 0
     std::vector<std::uint8_t> texels;
+    std::string metadata;         // the value of key "brdflut" (the metadata JSON), empty if none
 };
 
 // Reads the base level of an uncompressed, unsupercompressed KTX2 file
 // (KTX File Format Specification 2.0). Throws std::runtime_error.
 Texture read_ktx2(const std::string& path);
+
+// FNV-1a 64-bit hash of a string as 16 hex digits (what the generated
+// shaders record of their table's metadata).
+std::string fnv1a64_hex(const std::string& bytes);
 
 // Compiles a compute shader to SPIR-V with glslangValidator (HLSL through
 // its HLSL front end, -D, entry point "main"). Throws std::runtime_error
