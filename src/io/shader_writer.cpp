@@ -161,6 +161,44 @@ std::string format_name(Storage s, int channels) {
     return "";
 }
 
+// How a function returns the filtered texel beyond the channels by name.
+// Each entry adds struct members and the code filling them from `texel`
+// (the filtered vec4 / float4) after the channels are set.
+//
+// Hook for LTC tables: an entry "ltc_inverse" gives the inverse matrix in
+// the form the evaluation needs (GLSL mat3, HLSL float3x3), built from the
+// channels in the table's documented packing, with a comment naming it
+// (Heitz et al. 2016: M^-1 = [[m00, 0, m02], [0, m11, 0], [m20, 0, 1]],
+// column- versus row-major stated for each language), and the table sets
+// TableDefinition::shader_result = "ltc_inverse".
+struct ResultForm {
+    std::string name;
+    std::string (*members)(ShaderLanguage);  // extra struct members, one per line
+    std::string (*code)(ShaderLanguage);     // extra statements setting them
+};
+
+std::string none(ShaderLanguage) { return ""; }
+
+const std::vector<ResultForm>& result_forms() {
+    static const std::vector<ResultForm> forms = {{"", none, none}};
+    return forms;
+}
+
+const ResultForm& result_form(const Table& t) {
+    std::string name;
+    try {
+        name = find_table(t.id).shader_result;
+    } catch (const Error&) {
+        name.clear();  // a table not in the catalogue: its channels by name
+    }
+    std::string known;
+    for (const ResultForm& f : result_forms()) {
+        if (f.name == name) return f;
+        known += (known.empty() ? "" : ", ") + (f.name.empty() ? std::string("(channels)") : f.name);
+    }
+    throw Error("table '" + t.id + "': shader result form '" + name + "' is not known; known: " + known);
+}
+
 }  // namespace
 
 std::string_view to_string(ShaderLanguage l) { return l == ShaderLanguage::glsl ? "glsl" : "hlsl"; }
@@ -202,6 +240,7 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
                     std::to_string(t.channels.size()) + " channels; a shader lookup needs 1 to 3 and 1 to 4");
     const bool glsl = lang == ShaderLanguage::glsl;
     const ShaderInterface si = shader_interface(t);
+    const ResultForm& form = result_form(t);
     static const char* kCoord[3] = {"x", "y", "z"};
     static const char* kComponent[4] = {"r", "g", "b", "a"};
     std::ostringstream o;
@@ -229,7 +268,7 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
     o << "struct " << si.result_type << " {\n";
     for (std::size_t c = 0; c < si.fields.size(); ++c)
         o << "    float " << si.fields[c] << ";  // " << kComponent[c] << ": " << t.channels[c] << "\n";
-    o << "};\n\n";
+    o << form.members(lang) << "};\n\n";
 
     // Signature.
     const std::string tex = glsl ? (si.dimensions == 3 ? "sampler3D lut" : "sampler2D lut")
@@ -273,6 +312,7 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
     o << "    " << si.result_type << " result;\n";
     for (std::size_t c = 0; c < si.fields.size(); ++c)
         o << "    result." << si.fields[c] << " = texel." << kComponent[c] << ";\n";
+    o << form.code(lang);
     o << "    return result;\n}\n";
     return o.str();
 }
