@@ -68,15 +68,42 @@ std::string identifier(std::string_view text) {
     return id;
 }
 
-// Member names: the symbol before the ':' of each channel's description
-// ("A: integral of ..." -> A, "F_avg(1/eta): ..." -> F_avg_1_eta); the
+// The symbol before the ':' of a channel's description ("A: integral of
+// ..." -> A, "F_avg(1/eta): ..." -> F_avg_1_eta), empty when there is none.
+std::string channel_symbol(const std::string& description) {
+    const std::size_t colon = description.find(':');
+    return colon == std::string::npos || colon > 24 ? "" : identifier(description.substr(0, colon));
+}
+
+// Member names, one per stored channel: its symbol, or for a stored sum of
+// table channels (channel map) their symbols joined by "_plus_"; the
 // channel letter where there is none, or where two channels would clash.
 std::vector<std::string> field_names(const Table& t) {
     static const char* kLetters[4] = {"R", "G", "B", "A"};
     std::vector<std::string> names;
-    for (const std::string& c : t.channels) {
-        const std::size_t colon = c.find(':');
-        names.push_back(colon == std::string::npos || colon > 24 ? "" : identifier(c.substr(0, colon)));
+    const TableDefinition* def = nullptr;
+    try {
+        def = &find_table(t.id);
+    } catch (const Error&) {
+        def = nullptr;
+    }
+    for (std::size_t c = 0; c < t.channels.size(); ++c) {
+        if (t.channel_map.empty() || !def || c >= t.channel_map.size()) {
+            names.push_back(channel_symbol(t.channels[c]));
+            continue;
+        }
+        std::string name;
+        for (const int tc : t.channel_map[c]) {
+            const std::string sym = tc >= 0 && tc < static_cast<int>(def->channels.size())
+                                        ? channel_symbol(def->channels[static_cast<std::size_t>(tc)])
+                                        : "";
+            if (sym.empty()) {  // a part without a symbol: the letter is used
+                name.clear();
+                break;
+            }
+            name += (name.empty() ? "" : "_plus_") + sym;
+        }
+        names.push_back(name);
     }
     for (std::size_t i = 0; i < names.size(); ++i) {
         bool clash = names[i].empty() || reserved(names[i]);
@@ -92,27 +119,6 @@ std::vector<std::string> field_names(const Table& t) {
 std::string parameter_name(const std::string& axis) {
     const std::string id = identifier(axis);
     return reserved(id) ? id + "_value" : id;
-}
-
-// The inverse of each warp as one expression of v (the clamped parameter),
-// lo (axis min) and hi (axis max), valid in GLSL and HLSL.
-std::string warp_shader_u(Warp w) {
-    switch (w) {
-        case Warp::linear: return "(v - lo) / (hi - lo)";
-        case Warp::square: return "sqrt(max((v - lo) / (hi - lo), 0.0))";
-        case Warp::sqrt: return "((v - lo) / (hi - lo)) * ((v - lo) / (hi - lo))";
-        case Warp::log: return "log(v / lo) / log(hi / lo)";
-    }
-    return "(v - lo) / (hi - lo)";
-}
-std::string warp_formula(Warp w) {
-    switch (w) {
-        case Warp::linear: return "value = lo + (hi - lo) u";
-        case Warp::square: return "value = lo + (hi - lo) u^2";
-        case Warp::sqrt: return "value = lo + (hi - lo) sqrt(u)";
-        case Warp::log: return "value = lo (hi / lo)^u";
-    }
-    return "";
 }
 
 // Replaces whole identifiers v, lo, hi of an expression.
@@ -283,22 +289,28 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
         const Axis& ax = t.axes[a];
         const std::string p = parameter_name(ax.name);
         const std::string lo = p + "_lo", hi = p + "_hi", v = p + "_v", u = p + "_u";
-        const double range_lo = std::min(ax.min, ax.max), range_hi = std::max(ax.min, ax.max);
-        o << "    // " << kCoord[a] << ": " << ax.name << " over [" << literal(ax.min) << ", " << literal(ax.max)
-          << "], " << ax.count << " texels, placement " << to_string(ax.placement) << ", warp "
-          << to_string(ax.warp) << ": " << warp_formula(ax.warp) << "\n";
+        const WarpDef& warp = warp_def(ax.warp);
+        o << "    // " << kCoord[a] << ": " << ax.name << ", " << ax.count << " texels, placement "
+          << to_string(ax.placement) << (ax.flip ? ", stored flipped" : "") << ", warp " << warp.name << ": "
+          << ax.name << " = " << warp.formula << ", min = " << literal(ax.min) << ", max = " << literal(ax.max);
+        if (ax.has_clamp()) o << ", clamped to [" << literal(ax.clamp_lo) << ", " << literal(ax.clamp_hi) << "]";
+        o << "\n";
         o << "    const float " << lo << " = " << literal(ax.min) << ";\n";
         o << "    const float " << hi << " = " << literal(ax.max) << ";\n";
-        o << "    float " << v << " = clamp(" << p << ", " << literal(range_lo) << ", " << literal(range_hi)
-          << ");\n";
-        o << "    float " << u << " = " << substitute(warp_shader_u(ax.warp), v, lo, hi) << ";  // inverse warp\n";
+        // lowest() and highest(): the range with the axis' clamps applied.
+        o << "    float " << v << " = clamp(" << p << ", " << literal(ax.lowest()) << ", " << literal(ax.highest())
+          << ");  // the parameters the texels cover\n";
+        o << "    float " << u << " = " << substitute(warp.shader_u, v, lo, hi) << ";  // inverse warp\n";
         o << "    float " << kCoord[a] << " = ";
         if (ax.placement == Placement::center) {
-            o << u << ";  // center: ((u count - 0.5) + 0.5) / count = u\n";
+            o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";
         } else {
             o << "(" << u << " * " << literal(ax.count - 1) << " + 0.5) / " << literal(ax.count)
-              << ";  // endpoints: (u (count - 1) + 0.5) / count\n";
+              << ";  // endpoints: position = u (count - 1), (position + 0.5) / count\n";
         }
+        if (ax.flip)
+            o << "    " << kCoord[a] << " = 1.0 - " << kCoord[a]
+              << ";  // flipped: position count - 1 - position, coordinate 1 - coordinate\n";
         o << "\n";
     }
     std::string coords;
