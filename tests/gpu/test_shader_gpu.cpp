@@ -453,6 +453,92 @@ TEST(ShaderLookupMismatch, FunctionOfASquareWarpOnALinearTextureIsCaught) {
                  "ggx_albedo_avg --size 32 --warp alpha=square");
 }
 
+// A 3-axis table (none is in the catalogue yet): its file stacks the z
+// slices as rows, which uploaded as a 3-D texture of the same bytes gives
+// what the generated sampler3D / Texture3D function reads. Smooth synthetic
+// values on center, endpoints and flipped log axes; compared with
+// sample_lut's trilinear filter at random points.
+TEST(ShaderLookup3D, StackedSlicesUploadedAsA3DTextureMatchTrilinearSample) {
+    Table t;
+    t.id = "synthetic_3d";
+    Axis x, y, z;
+    x.name = "cos_theta", x.min = 0, x.max = 1, x.count = 9;
+    y.name = "alpha", y.min = 0, y.max = 1, y.count = 7, y.placement = Placement::endpoints, y.warp = Warp::square;
+    z.name = "radius", z.min = 0.1, z.max = 10, z.count = 5, z.warp = Warp::log, z.flip = true;
+    t.axes = {x, y, z};
+    t.channels = {"F: test values", "G: more test values"};
+    for (int k = 0; k < z.count; ++k)
+        for (int j = 0; j < y.count; ++j)
+            for (int i = 0; i < x.count; ++i) {
+                const double a = x.value(i), b = y.value(j), c = std::log(z.value(k));
+                t.values.push_back(std::sin(2 * a) * (1 + b) + 0.1 * c);
+                t.values.push_back(std::cos(a + b * c));
+            }
+    t.errors.assign(t.values.size(), 0.0);
+    TempDir dir;
+    const std::string path = dir / "synthetic_3d.ktx2";
+    write_table(path, t, PixelType::float32, Format::ktx2);
+    gpu::Texture tex = gpu::read_ktx2(path);
+    ASSERT_EQ(tex.height, static_cast<std::uint32_t>(y.count * z.count));  // stacked rows
+    tex.is_3d = true;
+    tex.height = static_cast<std::uint32_t>(y.count);
+    tex.depth = static_cast<std::uint32_t>(z.count);
+    const ExrImage img = read_table_image(path);
+    LutDescription d;
+    d.settings.axes = t.axes;
+
+    const ShaderInterface si = shader_interface(t);
+    ASSERT_EQ(si.dimensions, 3);
+    const int points = 2000;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> ux(-0.1, 1.1), ur(-1.2, 1.2);
+    std::vector<float> in;
+    for (int k = 0; k < points; ++k) {
+        in.push_back(static_cast<float>(ux(rng)));
+        in.push_back(static_cast<float>(ux(rng)));
+        in.push_back(static_cast<float>(std::pow(10.0, ur(rng))));
+    }
+    // Largest neighbour differences per axis, over the whole table.
+    double d1[3] = {0, 0, 0}, vmax = 0;
+    const int nx = x.count, ny = y.count;
+    auto at = [&](int i, int j, int k, int c) {
+        return t.values[static_cast<std::size_t>(((k * ny + j) * nx + i) * 2 + c)];
+    };
+    for (int k = 0; k < z.count; ++k)
+        for (int j = 0; j < y.count; ++j)
+            for (int i = 0; i < x.count; ++i)
+                for (int c = 0; c < 2; ++c) {
+                    vmax = std::max(vmax, std::abs(at(i, j, k, c)));
+                    if (i + 1 < nx) d1[0] = std::max(d1[0], std::abs(at(i + 1, j, k, c) - at(i, j, k, c)));
+                    if (j + 1 < ny) d1[1] = std::max(d1[1], std::abs(at(i, j + 1, k, c) - at(i, j, k, c)));
+                    if (k + 1 < z.count) d1[2] = std::max(d1[2], std::abs(at(i, j, k + 1, c) - at(i, j, k, c)));
+                }
+    double tol = 4 * kEps * vmax;
+    for (int a = 0; a < 3; ++a) tol += (weight_error() + 8 * kEps * t.axes[static_cast<std::size_t>(a)].count) * d1[a];
+
+    for (const bool hlsl : {false, true}) {
+        SCOPED_TRACE(hlsl ? "HLSL" : "GLSL");
+        const std::string src = shader_source(t, Storage::float32, hlsl ? ShaderLanguage::hlsl : ShaderLanguage::glsl);
+        ASSERT_NE(src.find(hlsl ? "Texture3D<float4> lut" : "sampler3D lut"), std::string::npos);
+        const auto spv = gpu::compile_compute(glslang(), compute_shader(si, src, hlsl), hlsl, dir.path().string());
+        const std::vector<float> res = runner().run(tex, spv, in, points, 4);
+        double worst = 0;
+        for (int k = 0; k < points; ++k) {
+            const std::vector<double> params = {in[3 * static_cast<std::size_t>(k)], in[3 * static_cast<std::size_t>(k) + 1],
+                                                in[3 * static_cast<std::size_t>(k) + 2]};
+            for (int c = 0; c < 2; ++c) {
+                const double want = sample_lut(img, d, params, c);
+                const double got = res[static_cast<std::size_t>(k) * 4 + static_cast<std::size_t>(c)];
+                ASSERT_LE(std::abs(got - want), tol) << "point " << k << " (" << params[0] << ", " << params[1]
+                                                     << ", " << params[2] << ") channel " << c;
+                worst = std::max(worst, std::abs(got - want));
+            }
+        }
+        std::printf("3-D %s: %d points, max |gpu - sample| %.2e (tolerance %.2e)\n", hlsl ? "HLSL" : "GLSL", points,
+                    worst, tol);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Tables, ShaderLookup, ::testing::Range<std::size_t>(0, configs().size()),
                          [](const ::testing::TestParamInfo<std::size_t>& i) {
                              std::string n = configs()[i.param].name;
