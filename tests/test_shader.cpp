@@ -54,5 +54,19 @@ TEST(ShaderWriter, WritesOneFunctionPerTableBesideIt) {
     EXPECT_NE(avg.find("result.F_avg_1_eta = texel.g;"), std::string::npos);
 }
 
+TEST(ShaderWriter, TransposedTableKeepsTheSignatureAndReadsItsFirstStoredAxisAsX) {
+    TempDir dir;
+    const auto r = test::run_cli("generate ggx_dfg --size 8x4 --order alpha,cos_theta --flip alpha --shader glsl -q -o '" +
+                                 dir / "out" + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string text = test::read_file(dir / "out/ggx_dfg.glsl");
+    EXPECT_NE(text.find("(sampler2D lut, float cos_theta, float alpha)"), std::string::npos) << text;
+    const std::size_t x = text.find("// x: alpha, 8 texels"), y = text.find("// y: cos_theta, 4 texels");
+    EXPECT_NE(x, std::string::npos) << text;
+    EXPECT_NE(y, std::string::npos) << text;
+    EXPECT_NE(text.find("x = 1.0 - x;"), std::string::npos) << "alpha is stored flipped";
+    EXPECT_EQ(text.find("y = 1.0 - y;"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace brdflut
