@@ -2,12 +2,13 @@
 //
 // The generated function follows the axis functions of the library step by
 // step, so that it computes what sample_lut() computes:
-//   1. v = clamp(parameter, axis range): the value the texels cover
-//      (sample clamps the texel position to [0, count - 1], the same thing
-//      for a monotonic warp);
+//   1. v = clamp(parameter, Axis::lowest(), Axis::highest()): the values
+//      the texels cover, the axis' clamps applied (sample clamps the
+//      parameter to the axis' clamps and the texel position to
+//      [0, count - 1], the same thing for a monotonic warp);
 //   2. u = the inverse warp of v (the warp's shader expression);
-//   3. position = u count - 0.5 (center) or u (count - 1) (endpoints),
-//      count - 1 - position when the axis is stored flipped;
+//   3. position = u count - 0.5 - shift (center) or u (count - 1) - shift
+//      (endpoints), count - 1 - position when the axis is stored flipped;
 //   4. texture coordinate = (position + 0.5) / count, simplified per case;
 //   5. the hardware's linear filter with clamp-to-edge addressing.
 #include "brdflut/shader.h"
@@ -15,6 +16,7 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -302,11 +304,20 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
           << ");  // the parameters the texels cover\n";
         o << "    float " << u << " = " << substitute(warp.shader_u, v, lo, hi) << ";  // inverse warp\n";
         o << "    float " << kCoord[a] << " = ";
-        if (ax.placement == Placement::center) {
+        if (ax.placement == Placement::center && ax.shift == 0.0) {
             o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";
-        } else {
+        } else if (ax.placement == Placement::center) {
+            o << u << (ax.shift > 0 ? " - " : " + ") << literal(std::abs(ax.shift)) << " / " << literal(ax.count)
+              << ";  // center, grid shifted by shift texels: position = u count - 0.5 - shift,\n"
+              << "    // (position + 0.5) / count = u - shift / count\n";
+        } else if (ax.shift == 0.0) {
             o << "(" << u << " * " << literal(ax.count - 1) << " + 0.5) / " << literal(ax.count)
               << ";  // endpoints: position = u (count - 1), (position + 0.5) / count\n";
+        } else {
+            o << "(" << u << " * " << literal(ax.count - 1) << (ax.shift > 0 ? " - " : " + ")
+              << literal(std::abs(ax.shift)) << " + 0.5) / "
+              << literal(ax.count) << ";  // endpoints, grid shifted by shift texels:\n"
+              << "    // position = u (count - 1) - shift, (position + 0.5) / count\n";
         }
         if (ax.flip)
             o << "    " << kCoord[a] << " = 1.0 - " << kCoord[a]
