@@ -6,6 +6,7 @@
 #                    [PRESET <name>]
 #                    [FORMAT exr|cpp|png16|dds|ktx2]
 #                    [OUTPUT_DIR <dir>]
+#                    [SHADER glsl|hlsl...]
 #                    [OPTIONS <generate argument>...])
 #
 # Runs `brdflut generate <ids> [--preset <name>] [--format <format>]
@@ -21,6 +22,8 @@
 #   OUTPUT_DIR  where the tables go; relative to the current binary folder.
 #               Default: ${CMAKE_CURRENT_BINARY_DIR}/brdflut_luts/<target>
 #               (<target>_<n> for the n-th call on the same target).
+#   SHADER      also write each table's lookup function beside it,
+#               <dir>/<id>.glsl and/or <dir>/<id>.hlsl (`--shader`).
 #   OPTIONS     further arguments of `brdflut generate`, passed verbatim,
 #               e.g. OPTIONS --size 64 --pixel half --placement alpha=endpoints
 #
@@ -41,10 +44,10 @@
 include_guard(GLOBAL)
 
 function(brdflut_add_luts target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PRESET;FORMAT;OUTPUT_DIR" "TABLES;OPTIONS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PRESET;FORMAT;OUTPUT_DIR" "TABLES;SHADER;OPTIONS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "brdflut_add_luts: unknown arguments: ${arg_UNPARSED_ARGUMENTS}; "
-                        "allowed: TABLES, PRESET, FORMAT, OUTPUT_DIR, OPTIONS")
+                        "allowed: TABLES, PRESET, FORMAT, OUTPUT_DIR, SHADER, OPTIONS")
   endif()
   if(NOT TARGET ${target})
     message(FATAL_ERROR "brdflut_add_luts: '${target}' is not a target")
@@ -74,6 +77,12 @@ function(brdflut_add_luts target)
                         "allowed: exr, cpp, png16, dds, ktx2")
   endif()
 
+  foreach(language IN LISTS arg_SHADER)
+    if(NOT language MATCHES "^(glsl|hlsl)$")
+      message(FATAL_ERROR "brdflut_add_luts: SHADER '${language}' is not known; allowed: glsl, hlsl")
+    endif()
+  endforeach()
+
   # One name per call, for the helper target and the bookkeeping files.
   get_target_property(calls ${target} BRDFLUT_LUTS_CALLS)
   if(NOT calls)
@@ -100,6 +109,9 @@ function(brdflut_add_luts target)
   if(NOT arg_FORMAT STREQUAL "exr")
     list(APPEND arguments --format ${arg_FORMAT})
   endif()
+  foreach(language IN LISTS arg_SHADER)
+    list(APPEND arguments --shader ${language})
+  endforeach()
   list(APPEND arguments ${arg_OPTIONS} --quiet -o "${output_dir}")
 
   set(work_dir "${CMAKE_CURRENT_BINARY_DIR}/brdflut_luts")
@@ -111,6 +123,9 @@ function(brdflut_add_luts target)
     set(outputs "")
     foreach(id IN LISTS arg_TABLES)
       list(APPEND outputs "${output_dir}/${id}${extension_${arg_FORMAT}}")
+      foreach(language IN LISTS arg_SHADER)
+        list(APPEND outputs "${output_dir}/${id}.${language}")
+      endforeach()
     endforeach()
     set(touch_stamp "")
   endif()

@@ -66,6 +66,11 @@ struct TableDefinition {
     // The engine preset the table belongs to (`generate --preset NAME`); empty
     // for the default set that `generate --all` writes.
     std::string preset;
+    // How the generated shader lookup function (brdflut/shader.h) returns
+    // the texel: empty = one struct member per channel; otherwise the name of
+    // a result form of the shader writer (src/io/shader_writer.cpp,
+    // result_forms()), e.g. an LTC table's inverse matrix.
+    std::string shader_result;
     // Validates settings (throws brdflut::Error) and builds the evaluator.
     std::function<PreparedTable(const TableSettings&)> prepare;
 };

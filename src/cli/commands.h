@@ -18,6 +18,7 @@ struct GenerateArgs {
     std::string output = ".";
     std::string pixel = "float";
     std::string format = "exr";  // exr, cpp, png16, dds, ktx2 (brdflut/formats.h)
+    std::vector<std::string> shaders;  // --shader glsl|hlsl (repeatable): lookup functions beside each table
     bool pixel_given = false;  // --pixel on the command line (else a preset's own)
     std::string preset;        // --preset NAME
     int threads = 0;

@@ -8,6 +8,7 @@
 #include "brdflut/error.h"
 #include "brdflut/formats.h"
 #include "brdflut/generate.h"
+#include "brdflut/shader.h"
 #include "cli/commands.h"
 #include "io/table_checks.h"
 
@@ -104,6 +105,14 @@ int run_generate(const GenerateArgs& a) {
         pixel = PixelType::float32;  // a preset's half pixels: png16 has its own 16-bit storage
     }
     const Storage storage = storage_for(format, pixel);
+    std::vector<ShaderLanguage> shaders;
+    for (const std::string& s : a.shaders) {
+        try {
+            shaders.push_back(shader_language_from_string(s));
+        } catch (const Error& e) {
+            throw Error(std::string("--shader: ") + e.what());
+        }
+    }
     if (a.threads < 0 || a.threads > 1024)
         throw Error("--threads " + std::to_string(a.threads) + " is out of range; allowed: 0 (all cores) to 1024");
     const Method method = method_from_string(a.table.method);
@@ -155,6 +164,12 @@ int run_generate(const GenerateArgs& a) {
         const std::string path =
             (std::filesystem::path(a.output) / (table.id + "." + file_extension(format))).string();
         write_table(path, table, pixel, format);
+        for (const ShaderLanguage lang : shaders) {
+            const std::string shader_path =
+                (std::filesystem::path(a.output) / (table.id + "." + shader_extension(lang))).string();
+            write_shader(shader_path, table, storage, lang);
+            if (!a.quiet) std::printf("wrote %s\n", shader_path.c_str());
+        }
         if (!a.quiet) {
             std::printf("wrote %s: %dx%d, %d channel(s), %s, error bound %.2e, %.2f s\n", path.c_str(),
                         table.width(), table.height(), table.channel_count(),

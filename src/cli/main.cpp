@@ -97,6 +97,8 @@ int main(int argc, char** argv) {
     gen->add_option("--format", g.format,
                     "File format: exr, cpp (C++17 header), png16 (values in [0, 1] only), dds or ktx2")
         ->capture_default_str();
+    gen->add_option("--shader", g.shaders,
+                    "Also write a lookup function <id>.glsl or <id>.hlsl beside each table (glsl or hlsl; repeatable)");
     gen->add_option("--threads", g.threads, "Worker threads; 0 uses every core")->capture_default_str();
     gen->add_flag("-q,--quiet", g.quiet, "Print nothing but errors");
     std::string config_file;

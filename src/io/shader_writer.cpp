@@ -1,0 +1,347 @@
+// GLSL and HLSL lookup functions (include/brdflut/shader.h).
+//
+// The generated function follows the axis functions of the library step by
+// step, so that it computes what sample_lut() computes:
+//   1. v = clamp(parameter, Axis::lowest(), Axis::highest()): the values
+//      the texels cover, the axis' clamps applied (sample clamps the
+//      parameter to the axis' clamps and the texel position to
+//      [0, count - 1], the same thing for a monotonic warp);
+//   2. u = the inverse warp of v (the warp's shader expression);
+//   3. position = u count - 0.5 - shift (center) or u (count - 1) - shift
+//      (endpoints), count - 1 - position when the axis is stored flipped;
+//   4. texture coordinate = (position + 0.5) / count, simplified per case;
+//   5. the hardware's linear filter with clamp-to-edge addressing.
+#include "brdflut/shader.h"
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/error.h"
+#include "brdflut/formats.h"
+#include "brdflut/version.h"
+#include "io/binary.h"
+#include "io/table_writers.h"
+
+namespace brdflut {
+namespace {
+
+// A float literal valid in GLSL and HLSL that reads back as the same float
+// as the value does: the shortest digits, with a '.' or exponent.
+std::string literal(double value) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, static_cast<float>(value)).ptr;
+    std::string s(buf, end);
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    if (s.find_first_of("eE") != std::string::npos && s.find('.') == std::string::npos) {
+        const std::size_t e = s.find_first_of("eE");
+        s.insert(e, ".0");
+    }
+    return s;
+}
+
+// Words of GLSL or HLSL that a parameter or member must not be named.
+bool reserved(const std::string& s) {
+    static const std::set<std::string> words = {
+        "input", "output", "sample", "filter", "common", "partition", "active", "half", "fixed", "texture",
+        "sampler", "lut", "lut_sampler", "in", "out", "inout", "float", "int", "uint", "bool", "vec2", "vec3",
+        "vec4", "float2", "float3", "float4", "matrix", "vector", "line", "point", "triangle", "precise",
+        "shared", "packed", "register", "static", "const", "uniform", "buffer", "struct", "return", "x", "y",
+        "z", "texel", "result", "not", "and", "or"};
+    return words.count(s) > 0 || s.rfind("gl_", 0) == 0;
+}
+
+// An identifier from free text: letters, digits and single '_'.
+std::string identifier(std::string_view text) {
+    std::string id;
+    for (const char ch : text) {
+        const bool ok = std::isalnum(static_cast<unsigned char>(ch)) && static_cast<unsigned char>(ch) < 0x80;
+        const char c = ok ? ch : '_';
+        if (c == '_' && (id.empty() || id.back() == '_')) continue;
+        id += c;
+    }
+    while (!id.empty() && id.back() == '_') id.pop_back();
+    if (!id.empty() && std::isdigit(static_cast<unsigned char>(id.front()))) id = "c_" + id;
+    return id;
+}
+
+// The symbol before the ':' of a channel's description ("A: integral of
+// ..." -> A, "F_avg(1/eta): ..." -> F_avg_1_eta), empty when there is none.
+std::string channel_symbol(const std::string& description) {
+    const std::size_t colon = description.find(':');
+    return colon == std::string::npos || colon > 24 ? "" : identifier(description.substr(0, colon));
+}
+
+// Member names, one per stored channel: its symbol, or for a stored sum of
+// table channels (channel map) their symbols joined by "_plus_"; the
+// channel letter where there is none, or where two channels would clash.
+std::vector<std::string> field_names(const Table& t) {
+    static const char* kLetters[4] = {"R", "G", "B", "A"};
+    std::vector<std::string> names;
+    const TableDefinition* def = nullptr;
+    try {
+        def = &find_table(t.id);
+    } catch (const Error&) {
+        def = nullptr;
+    }
+    for (std::size_t c = 0; c < t.channels.size(); ++c) {
+        if (t.channel_map.empty() || !def || c >= t.channel_map.size()) {
+            names.push_back(channel_symbol(t.channels[c]));
+            continue;
+        }
+        std::string name;
+        for (const int tc : t.channel_map[c]) {
+            const std::string sym = tc >= 0 && tc < static_cast<int>(def->channels.size())
+                                        ? channel_symbol(def->channels[static_cast<std::size_t>(tc)])
+                                        : "";
+            if (sym.empty()) {  // a part without a symbol: the letter is used
+                name.clear();
+                break;
+            }
+            name += (name.empty() ? "" : "_plus_") + sym;
+        }
+        names.push_back(name);
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        bool clash = names[i].empty() || reserved(names[i]);
+        for (std::size_t j = 0; j < names.size(); ++j)
+            if (j != i && names[j] == names[i]) clash = true;
+        if (clash) names[i] = "";
+    }
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i].empty()) names[i] = kLetters[i];
+    return names;
+}
+
+std::string parameter_name(const std::string& axis) {
+    const std::string id = identifier(axis);
+    return reserved(id) ? id + "_value" : id;
+}
+
+// Replaces whole identifiers v, lo, hi of an expression.
+std::string substitute(const std::string& expr, const std::string& v, const std::string& lo, const std::string& hi) {
+    std::string out;
+    for (std::size_t i = 0; i < expr.size();) {
+        const unsigned char c = static_cast<unsigned char>(expr[i]);
+        if (std::isalpha(c) || c == '_') {
+            std::size_t j = i;
+            while (j < expr.size() && (std::isalnum(static_cast<unsigned char>(expr[j])) || expr[j] == '_')) ++j;
+            const std::string word = expr.substr(i, j - i);
+            out += word == "v" ? v : word == "lo" ? lo : word == "hi" ? hi : word;
+            i = j;
+        } else {
+            out += expr[i++];
+        }
+    }
+    return out;
+}
+
+// The definition's order of the parameters (the function's signature does
+// not change when a table is stored transposed).
+std::vector<std::string> parameter_axes(const Table& t) {
+    std::vector<std::string> names;
+    try {
+        for (const AxisSpec& s : find_table(t.id).axes) names.push_back(s.axis.name);
+    } catch (const Error&) {
+        names.clear();
+    }
+    if (names.size() != t.axes.size()) {
+        names.clear();
+        for (const Axis& a : t.axes) names.push_back(a.name);
+    }
+    return names;
+}
+
+std::string format_name(Storage s, int channels) {
+    const int stored = gpu_stored_channels(channels);
+    const char* rgba[4] = {"R", "RG", "RGBA", "RGBA"};
+    const std::string letters = stored == 4 ? rgba[2] : rgba[stored - 1];
+    switch (s) {
+        case Storage::half: return letters + "16F (VK_FORMAT_" + (stored == 1 ? "R16" : stored == 2 ? "R16G16" : "R16G16B16A16") + "_SFLOAT)";
+        case Storage::float32: return letters + "32F (VK_FORMAT_" + (stored == 1 ? "R32" : stored == 2 ? "R32G32" : "R32G32B32A32") + "_SFLOAT)";
+        case Storage::unorm16: return letters + "16 UNORM (16-bit PNG)";
+    }
+    return "";
+}
+
+// How a function returns the filtered texel beyond the channels by name.
+// Each entry adds struct members and the code filling them from `texel`
+// (the filtered vec4 / float4) after the channels are set.
+//
+// Hook for LTC tables: an entry "ltc_inverse" gives the inverse matrix in
+// the form the evaluation needs (GLSL mat3, HLSL float3x3), built from the
+// channels in the table's documented packing, with a comment naming it
+// (Heitz et al. 2016: M^-1 = [[m00, 0, m02], [0, m11, 0], [m20, 0, 1]],
+// column- versus row-major stated for each language), and the table sets
+// TableDefinition::shader_result = "ltc_inverse".
+struct ResultForm {
+    std::string name;
+    std::string (*members)(ShaderLanguage);  // extra struct members, one per line
+    std::string (*code)(ShaderLanguage);     // extra statements setting them
+};
+
+std::string none(ShaderLanguage) { return ""; }
+
+const std::vector<ResultForm>& result_forms() {
+    static const std::vector<ResultForm> forms = {{"", none, none}};
+    return forms;
+}
+
+const ResultForm& result_form(const Table& t) {
+    std::string name;
+    try {
+        name = find_table(t.id).shader_result;
+    } catch (const Error&) {
+        name.clear();  // a table not in the catalogue: its channels by name
+    }
+    std::string known;
+    for (const ResultForm& f : result_forms()) {
+        if (f.name == name) return f;
+        known += (known.empty() ? "" : ", ") + (f.name.empty() ? std::string("(channels)") : f.name);
+    }
+    throw Error("table '" + t.id + "': shader result form '" + name + "' is not known; known: " + known);
+}
+
+}  // namespace
+
+std::string_view to_string(ShaderLanguage l) { return l == ShaderLanguage::glsl ? "glsl" : "hlsl"; }
+
+ShaderLanguage shader_language_from_string(std::string_view s) {
+    if (s == "glsl") return ShaderLanguage::glsl;
+    if (s == "hlsl") return ShaderLanguage::hlsl;
+    throw Error("shader language '" + std::string(s) + "' is not known; allowed: glsl, hlsl");
+}
+
+std::string shader_extension(ShaderLanguage l) { return std::string(to_string(l)); }
+
+ShaderInterface shader_interface(const Table& t) {
+    ShaderInterface si;
+    const std::string id = cpp_identifier(t.id);
+    si.function = "brdflut_" + id;
+    si.result_type = "brdflut_" + id + "_value";
+    for (const std::string& a : parameter_axes(t)) si.parameters.push_back(parameter_name(a));
+    si.fields = field_names(t);
+    si.dimensions = t.axes.size() > 2 ? 3 : 2;
+    return si;
+}
+
+std::string metadata_hash(const Table& t, Storage s) {
+    const std::string json = metadata_json(t, s).dump();
+    std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64: offset basis
+    for (const char c : json) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ull;  // FNV prime
+    }
+    char buf[17];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
+std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) {
+    if (t.axes.empty() || t.axes.size() > 3 || t.channels.empty() || t.channels.size() > 4)
+        throw Error("table '" + t.id + "' has " + std::to_string(t.axes.size()) + " axes and " +
+                    std::to_string(t.channels.size()) + " channels; a shader lookup needs 1 to 3 and 1 to 4");
+    const bool glsl = lang == ShaderLanguage::glsl;
+    const ShaderInterface si = shader_interface(t);
+    const ResultForm& form = result_form(t);
+    static const char* kCoord[3] = {"x", "y", "z"};
+    static const char* kComponent[4] = {"r", "g", "b", "a"};
+    std::ostringstream o;
+
+    // Header: what the function reads and how to match it with its table.
+    o << "// " << si.function << ": lookup of brdflut table '" << t.id << "' (" << kName << " " << kVersion << ").\n"
+      << "// Generated with the table; do not edit. Matches the table file whose metadata hash is\n"
+      << "//   metadata fnv1a64 " << metadata_hash(t, storage) << "\n"
+      << "// = FNV-1a 64-bit of the bytes of the metadata JSON as stored in the file (KTX2 key\n"
+      << "// 'brdflut', EXR attribute 'brdflut', PNG iTXt 'brdflut', C++ header metadata[]).\n"
+      << "//\n"
+      << "// Texture: " << (si.dimensions == 3 ? "3-D, " : "2-D, ") << t.axes[0].count << " x "
+      << (t.axes.size() > 1 ? t.axes[1].count : 1);
+    if (t.axes.size() > 2) o << " x " << t.axes[2].count;
+    o << " texels, " << format_name(storage, t.channel_count()) << ";\n"
+      << "// sampler: linear filter, clamp to edge on every axis, one mip level (none generated).\n";
+    if (si.dimensions == 3)
+        o << "// The files store the z slices stacked as rows (row = z * count_y + y): the same bytes\n"
+          << "// uploaded as a width x count_y x count_z 3-D texture.\n";
+    o << "// Texture coordinate of an axis: (position + 0.5) / count, position = u count - 0.5\n"
+      << "// (placement center) or u (count - 1) (endpoints), count - 1 - position when flipped,\n"
+      << "// u the inverse warp of the parameter clamped to the axis' range.\n\n";
+
+    // Result struct.
+    o << "struct " << si.result_type << " {\n";
+    for (std::size_t c = 0; c < si.fields.size(); ++c)
+        o << "    float " << si.fields[c] << ";  // " << kComponent[c] << ": " << t.channels[c] << "\n";
+    o << form.members(lang) << "};\n\n";
+
+    // Signature.
+    const std::string tex = glsl ? (si.dimensions == 3 ? "sampler3D lut" : "sampler2D lut")
+                                 : (si.dimensions == 3 ? "Texture3D<float4> lut, SamplerState lut_sampler"
+                                                       : "Texture2D<float4> lut, SamplerState lut_sampler");
+    o << si.result_type << " " << si.function << "(" << tex;
+    for (const std::string& p : si.parameters) o << ", float " << p;
+    o << ")\n{\n";
+
+    // One block per stored axis, in storage order.
+    for (std::size_t a = 0; a < t.axes.size(); ++a) {
+        const Axis& ax = t.axes[a];
+        const std::string p = parameter_name(ax.name);
+        const std::string lo = p + "_lo", hi = p + "_hi", v = p + "_v", u = p + "_u";
+        const WarpDef& warp = warp_def(ax.warp);
+        o << "    // " << kCoord[a] << ": " << ax.name << ", " << ax.count << " texels, placement "
+          << to_string(ax.placement) << (ax.flip ? ", stored flipped" : "") << ", warp " << warp.name << ": "
+          << ax.name << " = " << warp.formula << ", min = " << literal(ax.min) << ", max = " << literal(ax.max);
+        if (ax.has_clamp()) o << ", clamped to [" << literal(ax.clamp_lo) << ", " << literal(ax.clamp_hi) << "]";
+        o << "\n";
+        o << "    const float " << lo << " = " << literal(ax.min) << ";\n";
+        o << "    const float " << hi << " = " << literal(ax.max) << ";\n";
+        // lowest() and highest(): the range with the axis' clamps applied.
+        o << "    float " << v << " = clamp(" << p << ", " << literal(ax.lowest()) << ", " << literal(ax.highest())
+          << ");  // the parameters the texels cover\n";
+        o << "    float " << u << " = " << substitute(warp.shader_u, v, lo, hi) << ";  // inverse warp\n";
+        o << "    float " << kCoord[a] << " = ";
+        if (ax.placement == Placement::center && ax.shift == 0.0) {
+            o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";
+        } else if (ax.placement == Placement::center) {
+            o << u << (ax.shift > 0 ? " - " : " + ") << literal(std::abs(ax.shift)) << " / " << literal(ax.count)
+              << ";  // center, grid shifted by shift texels: position = u count - 0.5 - shift,\n"
+              << "    // (position + 0.5) / count = u - shift / count\n";
+        } else if (ax.shift == 0.0) {
+            o << "(" << u << " * " << literal(ax.count - 1) << " + 0.5) / " << literal(ax.count)
+              << ";  // endpoints: position = u (count - 1), (position + 0.5) / count\n";
+        } else {
+            o << "(" << u << " * " << literal(ax.count - 1) << (ax.shift > 0 ? " - " : " + ")
+              << literal(std::abs(ax.shift)) << " + 0.5) / "
+              << literal(ax.count) << ";  // endpoints, grid shifted by shift texels:\n"
+              << "    // position = u (count - 1) - shift, (position + 0.5) / count\n";
+        }
+        if (ax.flip)
+            o << "    " << kCoord[a] << " = 1.0 - " << kCoord[a]
+              << ";  // flipped: position count - 1 - position, coordinate 1 - coordinate\n";
+        o << "\n";
+    }
+    std::string coords;
+    for (std::size_t a = 0; a < t.axes.size(); ++a) coords += std::string(a ? ", " : "") + kCoord[a];
+    if (t.axes.size() == 1) coords += ", 0.5";  // a one-axis table is a texture of height 1
+    const std::string vec = glsl ? (si.dimensions == 3 ? "vec3" : "vec2") : (si.dimensions == 3 ? "float3" : "float2");
+    if (glsl)
+        o << "    vec4 texel = textureLod(lut, " << vec << "(" << coords << "), 0.0);\n";
+    else
+        o << "    float4 texel = lut.SampleLevel(lut_sampler, " << vec << "(" << coords << "), 0.0);\n";
+    o << "    " << si.result_type << " result;\n";
+    for (std::size_t c = 0; c < si.fields.size(); ++c)
+        o << "    result." << si.fields[c] << " = texel." << kComponent[c] << ";\n";
+    o << form.code(lang);
+    o << "    return result;\n}\n";
+    return o.str();
+}
+
+void write_shader(const std::string& path, const Table& table, Storage storage, ShaderLanguage language) {
+    write_file_atomically(path, shader_source(table, storage, language));
+}
+
+}  // namespace brdflut
