@@ -109,8 +109,8 @@ struct LtcLobe {
 };
 
 struct LtcFitOptions {
-    int radial_nodes = 40;   // Gauss-Legendre nodes of the objective along the lobe's radius
-    int azimuth_nodes = 24;  // ... around the lobe's axis on [0, pi]
+    int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
+    int azimuth_nodes = 16;  // rays about the lobe's peak on [0, pi]
     double light_tolerance = 1e-7;  // relative to n0, of each exact light integral
 };
 // Options for a quality (draft, standard, reference).
@@ -120,7 +120,7 @@ struct LtcFit {
     LtcInverse minv;           // normalized by the middle element
     double n0 = 0, n1 = 0;     // int f cos, int f (1 - v.h)^5 cos (ggx_split_sum)
     double n0_error = 0, n1_error = 0;
-    double objective = 0;      // relative L3 error of n0 D against f cos
+    double objective = 0;      // the fit's objective (Heitz's measure, relative; ltc_fit.cpp)
     double below_horizon = 0;  // LTC mass below the horizon (of 1)
     std::array<double, 4> params{};  // the optimizer's (theta, ln m11, ln m22, m13 / m11)
     int evaluations = 0;

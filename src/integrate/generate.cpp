@@ -100,6 +100,7 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
                                       static_cast<std::size_t>(threads));
     oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, texels, 1), body);
     if (options.progress) options.progress(texels, texels);
+    if (prepared.finish) prepared.finish(t);
     return t;
 }
 
