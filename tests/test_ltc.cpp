@@ -276,6 +276,7 @@ TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
     s.axes[1].count = 4;
     const Table th = generate(h, s), tu = generate(u, s);
     for (std::size_t k = 0; k < th.texel_count(); ++k) {
+        if (k % 4 == 0) continue;  // roughness 0: HDRP fits at alpha >= 1e-3, Heitz at 1e-5
         const double a = th.at(k, 0), c = th.at(k, 1), b = th.at(k, 2), d = th.at(k, 3);
         EXPECT_NEAR(tu.at(k, 0), a / d, 1e-12 * std::abs(a / d) + 1e-300);
         EXPECT_NEAR(tu.at(k, 1), c / d, 1e-12 * std::abs(c / d) + 1e-300);

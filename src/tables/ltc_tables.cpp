@@ -38,7 +38,8 @@ public:
     // coords: (roughness, cos_theta) in the definition's order.
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const double r = c[0], mu = c[1];
-        const double alpha = alpha_from_perceptual(r);
+        // HDRP fits at alpha >= 1e-3 (its LTCTableGenerator); Heitz at 1e-5.
+        const double alpha = std::max(alpha_from_perceptual(r), layout_ == Layout::hdrp_matrix ? 1e-3 : 0.0);
         TexelValue out;
         const LtcFit fit = fit_ggx_ltc(mu, alpha, vis_, opt_);
         if (figures_ && texel < figures_->objective.size()) {
@@ -110,7 +111,8 @@ nlohmann::json ltc_model(Visibility vis, const std::string& layout) {
             {"distribution", "ggx"},
             {"visibility", to_string(vis)},
             {"fresnel", "1 (n1 carries the Schlick moment)"},
-            {"roughness", "alpha = max(perceptual_roughness^2, 1e-5)"},
+            {"roughness", layout == "hdrp" ? "alpha = max(perceptual_roughness^2, 1e-3)"
+                                           : "alpha = max(perceptual_roughness^2, 1e-5)"},
             {"layout", layout},
             {"frame", "normal +z, view (sin theta, 0, cos theta); M^-1 acts on column vectors in this frame"}};
 }
@@ -133,7 +135,8 @@ TableDefinition make(const Entry& e) {
     d.preset = e.preset;
     const Layout layout = e.layout;
     const std::string layout_text = e.layout_text;
-    d.prepare = [layout, layout_text](const TableSettings& s) {
+    const std::string preset = e.preset;
+    d.prepare = [layout, layout_text, preset](const TableSettings& s) {
         if (s.method == Method::monte_carlo)
             throw Error("LTC tables are fitted by quadrature only; --method monte_carlo is not allowed");
         const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
@@ -145,7 +148,13 @@ TableDefinition make(const Entry& e) {
         figures->below_horizon.assign(texels, 0.0);
         PreparedTable p;
         p.evaluator = std::make_unique<LtcEvaluator>(layout, vis, opt, figures);
-        p.model = ltc_model(vis, layout_text);
+        p.model = ltc_model(vis, layout == Layout::hdrp_matrix ? "hdrp" : layout_text);
+        if (layout == Layout::hdrp_matrix) p.model["layout"] = layout_text;
+        p.model["preset"] = preset;
+        p.model["engine_source"] = layout == Layout::hdrp_matrix
+                                       ? "Unity-Technologies/Graphics HDRP Runtime/Material/LTCAreaLight/LTCAreaLight.hlsl"
+                                       : "selfshadow/ltc_code fit/fitLTC.cpp (packTab); three.js "
+                                         "examples/jsm/lights/RectAreaLightTexturesLib.js";
         p.method = {{"rule", kRule},
                     {"objective_nodes", {{"radial", opt.radial_nodes}, {"azimuth", opt.azimuth_nodes}}}};
         if (layout == Layout::report)
@@ -199,8 +208,8 @@ void register_ltc_tables(std::vector<TableDefinition>& out) {
                          "LTC mass below the horizon (of 1)",
                          "largest integrated-light error over the light bank, as a fraction of n0",
                          "mean integrated-light error over the light bank, as a fraction of n0"}}));
-    out.push_back(make({Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp",
-                        "HDRP LTC GGX matrix: the inverse divided by its m22",
+    out.push_back(make({Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp_ltc",
+                        "HDRP LTC GGX matrix: the inverse divided by its m22 (alpha >= 1e-3)",
                         "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the "
                         "transposed inverse",
                         {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)",

@@ -204,6 +204,9 @@ const std::vector<Preset>& presets() {
                 "(64x64, rows sqrt(1 - cos theta), columns roughness, end points), refitted, with the "
                 "per-texel error table ltc_ggx_error",
          PixelType::float32},
+        {"hdrp_ltc", "Unity HDRP's LTC GGX matrix (64x64, columns roughness, rows sqrt(1 - cos theta), end "
+                     "points, alpha >= 1e-3), refitted; float, as its entries reach past the half range",
+         PixelType::float32},
     };
     return all;
 }
