@@ -14,6 +14,7 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "brdflut/quadrature.h"
+#include "brdflut/verify.h"
 
 namespace brdflut {
 namespace {
@@ -285,5 +286,17 @@ TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
     }
 }
 
+}  // namespace
+}  // namespace brdflut
+
+namespace brdflut {
+namespace {
+TEST(LtcVerify, ClosedFormAndLocalMinimumChecksPass) {
+    for (const char* id : {"ltc_1", "ltc_2"}) {
+        const std::vector<CheckRow> rows = verify_table(find_table(id));
+        ASSERT_FALSE(rows.empty()) << id;
+        for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
+    }
+}
 }  // namespace
 }  // namespace brdflut
