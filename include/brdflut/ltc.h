@@ -197,7 +197,7 @@ struct LtcComparison {
     // and of brdflut's refit at the same texels; and their medians.
     double stored_light_max = 0, stored_light_median = 0;
     double refit_light_max = 0, refit_light_median = 0;
-    std::size_t refit_better = 0;  // texels where the refit's error is lower
+    std::size_t refit_better = 0;  // texels where the refit's error is lower by more than 1e-6
     double stored_below_horizon_max = 0;
     std::vector<double> stored_light;  // per texel, storage order
     std::vector<double> refit_light;

@@ -67,7 +67,7 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         out.stored_light_max = std::max(out.stored_light_max, out.stored_light[k]);
         out.refit_light_max = std::max(out.refit_light_max, out.refit_light[k]);
         out.stored_below_horizon_max = std::max(out.stored_below_horizon_max, below[k]);
-        if (out.refit_light[k] < out.stored_light[k]) ++out.refit_better;
+        if (out.refit_light[k] < out.stored_light[k] - 1e-6) ++out.refit_better;  // beyond rounding
     }
     out.stored_light_median = median(out.stored_light);
     out.refit_light_median = median(out.refit_light);
