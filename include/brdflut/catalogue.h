@@ -54,6 +54,10 @@ struct PreparedTable {
     std::unique_ptr<TexelEvaluator> evaluator;
     nlohmann::json model;   // every parameter that changes the values
     nlohmann::json method;  // the rule and its settings
+    // Called once after every texel is filled (optional): adds table-wide
+    // figures the evaluator gathered (for example the largest fit error) to
+    // the table's method metadata.
+    std::function<void(Table&)> finish;
 };
 
 struct TableDefinition {

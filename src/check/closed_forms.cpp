@@ -12,6 +12,7 @@
 #include "brdflut/math.h"
 #include "brdflut/oren_nayar.h"
 #include "brdflut/verify.h"
+#include "check/ltc_checks.h"
 
 namespace brdflut {
 namespace {
@@ -47,6 +48,7 @@ double ggx_albedo_alpha_one(double mu) { return 1.0 - mu * std::log1p(1.0 / mu);
 
 std::map<std::string, std::vector<ClosedFormCheck>> build() {
     std::map<std::string, std::vector<ClosedFormCheck>> m;
+    add_ltc_checks(m);
     m["ggx_dfg"] = {
         {"A + B at alpha = 1 vs 1 - mu ln(1 + 1/mu)", 1e-8,
          [](const TexelEvaluator& e) {

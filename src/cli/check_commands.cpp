@@ -2,6 +2,7 @@
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
+#include <optional>
 #include <iostream>
 #include <sstream>
 
@@ -9,6 +10,7 @@
 #include "brdflut/exr.h"
 #include "brdflut/formats.h"
 #include "brdflut/lut.h"
+#include "brdflut/ltc.h"
 #include "brdflut/plot.h"
 #include "brdflut/verify.h"
 #include "cli/commands.h"
@@ -141,6 +143,9 @@ int run_compare(const CompareArgs& a) {
     const Tolerance tol = a.tolerance.empty() ? default_tolerance(d.image) : given;
     const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst), tol);
     const auto& axes = d.lut.settings.axes;
+    // An LTC matrix is judged by the light it gives, not by its coefficients.
+    std::optional<LtcComparison> ltc;
+    if (is_ltc_matrix_table(d.lut.def->id)) ltc = compare_ltc_light(d.image, d.lut, a.threads);
     if (!a.plot.empty()) {
         if (axes.size() > 2) throw Error("--plot: 3-D tables cannot be drawn as one heatmap");
         Heatmap h;
@@ -169,6 +174,12 @@ int run_compare(const CompareArgs& a) {
         }
         j["worst"] = w;
         j["exact_error_bound"] = rep.exact_error_bound;
+        if (ltc)
+            j["ltc_light_error"] = {{"stored_max", ltc->stored_light_max}, {"stored_median", ltc->stored_light_median},
+                                    {"refit_max", ltc->refit_light_max}, {"refit_median", ltc->refit_light_median},
+                                    {"refit_better_texels", ltc->refit_better}, {"texels", ltc->texels},
+                                    {"stored_below_horizon_max", ltc->stored_below_horizon_max},
+                                    {"stored_per_texel", ltc->stored_light}, {"refit_per_texel", ltc->refit_light}};
         j["verdict"] = {{"pass", rep.pass()},
                         {"tolerance", {{"abs", tol.abs}, {"rel", tol.rel}, {"storage_steps", tol.steps},
                                        {"source", tol.source}}},
@@ -194,6 +205,13 @@ int run_compare(const CompareArgs& a) {
                     t.exact, t.error);
     }
     std::printf("\n(the exact values themselves are within %s)\n", sci(rep.exact_error_bound).c_str());
+    if (ltc)
+        std::printf("\nintegrated-light error over the light bank (fraction of n0, exact n0):\n"
+                    "  stored: max %s, median %s (LTC mass below the horizon up to %s)\n"
+                    "  refit:  max %s, median %s; lower at %zu of %zu texels\n",
+                    sci(ltc->stored_light_max).c_str(), sci(ltc->stored_light_median).c_str(),
+                    sci(ltc->stored_below_horizon_max).c_str(), sci(ltc->refit_light_max).c_str(),
+                    sci(ltc->refit_light_median).c_str(), ltc->refit_better, ltc->texels);
     std::printf("\n%s\n", verdict_line(rep).c_str());
     return rep.pass() ? 0 : kExitFailure;
 }

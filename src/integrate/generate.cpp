@@ -105,6 +105,7 @@ Table generate(const TableDefinition& def, const TableSettings& settings,
     oneapi::tbb::parallel_for(oneapi::tbb::blocked_range<std::size_t>(0, texels, 1), body);
     if (options.progress) options.progress(texels, texels);
     t.evaluations = evaluations.load();
+    if (prepared.finish) prepared.finish(t);
     return t;
 }
 

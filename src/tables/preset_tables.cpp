@@ -206,6 +206,13 @@ const std::vector<Preset>& presets() {
          PixelType::half},
         {"godot", "Godot 4's environment BRDF (an analytic fit in the engine) as a 128x128 split-sum table",
          PixelType::half},
+        {"ltc", "Heitz 2016 LTC area-light tables ltc_1, ltc_2 as three.js, EEVEE and Godot load them "
+                "(64x64, rows sqrt(1 - cos theta), columns roughness, end points), refitted, with the "
+                "per-texel error table ltc_ggx_error",
+         PixelType::float32},
+        {"hdrp_ltc", "Unity HDRP's LTC GGX matrix (64x64, columns roughness, rows sqrt(1 - cos theta), end "
+                     "points, alpha >= 1e-3), refitted; float, as its entries reach past the half range",
+         PixelType::float32},
     };
     return all;
 }

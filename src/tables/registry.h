@@ -14,6 +14,7 @@ void register_disney_tables(std::vector<TableDefinition>& out);
 void register_oren_nayar_tables(std::vector<TableDefinition>& out);
 void register_sheen_tables(std::vector<TableDefinition>& out);
 void register_preset_tables(std::vector<TableDefinition>& out);
+void register_ltc_tables(std::vector<TableDefinition>& out);
 
 // Helpers shared by the table families.
 namespace tables {

@@ -1,0 +1,108 @@
+// The 64x64 GGX LTC fit (ltc_1 at default quality): wall and CPU time at 1
+// and 2 threads, and every texel's integrated-light error against Heitz's
+// published table (the three.js copy in tests/fixtures/ltc).
+//
+//   brdflut_ltc_report [FIXTURE_DIR]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/generate.h"
+#include "brdflut/ltc.h"
+
+using namespace brdflut;
+
+namespace {
+std::vector<double> read_numbers(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<double> v;
+    double x;
+    while (in >> x) v.push_back(x);
+    return v;
+}
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+double quantile(std::vector<double> v, double q) {
+    std::sort(v.begin(), v.end());
+    return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string dir = argc > 1 ? argv[1] : std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/ltc";
+    const TableDefinition& def = find_table("ltc_1");
+    const TableSettings s = default_settings(def);
+    Table t;
+    for (int threads : {1, 2}) {
+        GenerateOptions o;
+        o.threads = threads;
+        const double c0 = cpu_seconds();
+        const auto w0 = std::chrono::steady_clock::now();
+        t = generate(def, s, o);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+        std::printf("ltc_1 64x64, %d thread(s): wall %.2f s, CPU %.2f s\n", threads, wall, cpu_seconds() - c0);
+    }
+    std::printf("fit objective: max %.4g, median %.4g; LTC mass below the horizon: max %.4g\n",
+                t.method["fit_error"]["objective_max"].get<double>(),
+                t.method["fit_error"]["objective_median"].get<double>(),
+                t.method["fit_error"]["below_horizon_max"].get<double>());
+
+    const std::vector<double> t1 = read_numbers(dir + "/three_ltc_1.txt");
+    const std::vector<double> t2 = read_numbers(dir + "/three_ltc_2.txt");
+    if (t1.size() != 64u * 64u * 4u || t2.size() != t1.size()) {
+        std::fprintf(stderr, "cannot read the fixture in %s\n", dir.c_str());
+        return 1;
+    }
+    const std::size_t n = 64 * 64;
+    std::vector<double> mine(n), heitz(n), mine_l3(n), heitz_l3(n), grazing_mine, grazing_heitz;
+    const auto w0 = std::chrono::steady_clock::now();
+    parallel_for_index(n, 0, [&](std::size_t k) {
+        const int a = static_cast<int>(k % 64), row = static_cast<int>(k / 64);
+        const double r = s.axes[0].value(a), mu = s.axes[1].value(row), alpha = alpha_from_perceptual(r);
+        const LtcInverse fit{t.at(k, 0), t.at(k, 2), t.at(k, 1), t.at(k, 3)};
+        const LtcInverse pub{t1[4 * k], t1[4 * k + 2], t1[4 * k + 1], t1[4 * k + 3]};
+        const LtcFit f = fit_ggx_ltc(mu, alpha, Visibility::height_correlated);
+        const LtcTexelReport rm = ltc_texel_report(mu, alpha, Visibility::height_correlated, fit.matrix(), f.n0);
+        const LtcTexelReport rh = ltc_texel_report(mu, alpha, Visibility::height_correlated, pub.matrix(), t2[4 * k]);
+        mine[k] = rm.light_max;
+        heitz[k] = rh.light_max;
+        mine_l3[k] = rm.relative_l3;
+        heitz_l3[k] = rh.relative_l3;
+    });
+    std::size_t better = 0, much_worse = 0;
+    double worst_ratio = 0.0;
+    std::size_t worst_at = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        better += mine[k] < heitz[k];
+        const double ratio = mine[k] / std::max(heitz[k], 1e-3);
+        if (ratio > 2.0) ++much_worse;
+        if (ratio > worst_ratio) {
+            worst_ratio = ratio;
+            worst_at = k;
+        }
+        if (k / 64 >= 56) {
+            grazing_mine.push_back(mine[k]);
+            grazing_heitz.push_back(heitz[k]);
+        }
+    }
+    std::printf("error report: %.1f s wall\n",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
+    std::printf("integrated-light error (max over the bank, fraction of n0):\n");
+    std::printf("  refit:  median %.4g, 90%% %.4g, worst %.4g\n", quantile(mine, 0.5), quantile(mine, 0.9),
+                quantile(mine, 1.0));
+    std::printf("  Heitz:  median %.4g, 90%% %.4g, worst %.4g\n", quantile(heitz, 0.5), quantile(heitz, 0.9),
+                quantile(heitz, 1.0));
+    std::printf("  grazing rows (sqrt(1 - cos) >= 56/63): refit median %.4g worst %.4g; Heitz median %.4g worst %.4g\n",
+                quantile(grazing_mine, 0.5), quantile(grazing_mine, 1.0), quantile(grazing_heitz, 0.5),
+                quantile(grazing_heitz, 1.0));
+    std::printf("  refit lower at %zu of %zu texels; more than twice Heitz's (floor 1e-3) at %zu; "
+                "worst ratio %.3g at roughness index %zu, row %zu (refit %.4g, Heitz %.4g)\n",
+                better, n, much_worse, worst_ratio, worst_at % 64, worst_at / 64, mine[worst_at], heitz[worst_at]);
+    std::printf("relative L3 error of the lobe: refit median %.4g worst %.4g; Heitz median %.4g worst %.4g\n",
+                quantile(mine_l3, 0.5), quantile(mine_l3, 1.0), quantile(heitz_l3, 0.5), quantile(heitz_l3, 1.0));
+    return 0;
+}

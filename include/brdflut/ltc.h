@@ -1,0 +1,211 @@
+// Linearly transformed cosines (LTC) for polygonal area lights.
+//
+// Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light Shading
+//   with Linearly Transformed Cosines"
+// Snyder 1996, "Area Light Sources for Real-Time Graphics" (the projected
+//   solid angle of a spherical cap clipped by the horizon)
+//
+// Conventions: the shading frame has the normal along +z and the view
+// direction in the x-z plane at +x, wo = (sin theta_o, 0, cos theta_o), so
+// the mirror direction is at -x. Matrices act on column vectors and are
+// written by rows: m[row][col].
+//
+// An LTC is the clamped cosine D_o(w) = max(0, w.z) / pi carried by a 3x3
+// matrix M to the distribution
+//
+//   D(w) = D_o(w_o) |det M^-1| / |M^-1 w|^3,   w_o = M^-1 w / |M^-1 w|,
+//
+// a density per steradian over the whole sphere (it integrates to 1; the
+// part below the horizon z < 0 is mass the BRDF does not have). The
+// integral of D over a polygon P is the clamped cosine's integral over
+// M^-1 P, which has a closed form (polygon_clamped_cosine).
+//
+// An isotropic BRDF lobe in this frame is symmetric in y, so M^-1 has the
+// form [[a, 0, b], [0, e, 0], [c, 0, d]] and D does not change when M^-1 is
+// scaled: engines store it divided by one of its elements (LtcInverse).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "brdflut/math.h"
+#include "brdflut/microfacet.h"
+
+namespace brdflut {
+
+// A 3x3 matrix by rows.
+struct Mat3 {
+    std::array<std::array<double, 3>, 3> m{};
+
+    static Mat3 identity() { return Mat3{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}}; }
+    Vec3 operator*(const Vec3& v) const {
+        return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+                m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
+    Mat3 operator*(const Mat3& o) const;
+    double det() const;
+    Mat3 inverse() const;  // undefined for a singular matrix
+};
+
+// The inverse matrix of an isotropic LTC normalized by its middle element:
+// M^-1 = [[a, 0, b], [0, 1, 0], [c, 0, d]] (by rows). In glm's m[col][row],
+// which Heitz's tables and three.js use, (a, c, b, d) = (m[0][0], m[0][2],
+// m[2][0], m[2][2]).
+struct LtcInverse {
+    double a = 1.0, b = 0.0, c = 0.0, d = 1.0;
+
+    Mat3 matrix() const { return Mat3{{{{a, 0, b}, {0, 1, 0}, {c, 0, d}}}}; }
+    // From any y-symmetric M^-1 (divided by its middle element).
+    static LtcInverse from_matrix(const Mat3& inv);
+};
+
+// D(w) of the LTC with inverse matrix minv, for any direction w (not
+// necessarily unit): per steradian, integrating to 1 over the sphere.
+double ltc_density(const Mat3& minv, const Vec3& w);
+
+// (1/pi) * integral over the spherical polygon P of max(0, w.z) dw: the
+// form factor of a polygon (vertices are directions from the shading point,
+// any length, convex or not, either winding), clipped to the horizon z >= 0
+// by the edge formula (1/2pi) sum_i angle(v_i, v_i+1) n_i.z. n >= 3.
+double polygon_clamped_cosine(const Vec3* v, std::size_t n);
+
+// The integral of the LTC's D over the polygon P: polygon_clamped_cosine of
+// M^-1 P, as a shader computes it (the light is clipped in the cosine's
+// frame, so LTC mass below the surface horizon does receive light).
+double ltc_polygon_integral(const Mat3& minv, const Vec3* v, std::size_t n);
+
+// Clips a polygon (directions from the origin) to the half space z >= 0.
+std::vector<Vec3> clip_to_horizon(const Vec3* v, std::size_t n);
+
+// The projected solid angle of a spherical cap of angular radius sigma whose
+// centre is at cos(elevation from the normal) z, clipped to the horizon,
+// divided by pi sin^2(sigma): the fourth channel of Heitz's ltc_2, with
+// len = sin^2(sigma) (the length of the average vector of a sphere light).
+// z in [-1, 1], len in [0, 1]; at len = 0 it is max(z, 0).
+double sphere_horizon_form_factor(double z, double len);
+
+// ---- Fitting (src/integrate/ltc_fit.cpp) ----
+
+// Heitz's smallest alpha (fitLTC.cpp MIN_ALPHA): below it the lobe is
+// evaluated at this width (a mirror lobe has no finite LTC).
+inline constexpr double kLtcMinAlpha = 1e-5;
+// Heitz's largest view angle, theta_o <= 1.57: at mu_o -> 0 the half vector
+// of the mirror lobe is lost to cancellation, and the lobe is evaluated at
+// this cosine instead (cos(1.57)).
+inline constexpr double kLtcMinMu = 7.963267107332633e-4;
+
+// The lobe an LTC is fitted to: f(wo, wi) cos(theta_i), F = 1.
+struct LtcLobe {
+    Ggx ggx;
+    Visibility vis;
+    Vec3 wo;
+    double mu_o;
+
+    LtcLobe(double mu_o, double alpha, Visibility vis);
+    // f cos(theta_i) for a unit direction wi; 0 below the horizon.
+    double operator()(const Vec3& wi) const;
+};
+
+struct LtcFitOptions {
+    int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
+    int azimuth_nodes = 16;  // rays about the lobe's peak on [0, pi]
+    double light_tolerance = 1e-7;  // relative to n0, of each exact light integral
+};
+// Options for a quality (draft, standard, reference).
+LtcFitOptions ltc_fit_options(int quality_level);
+
+struct LtcFit {
+    LtcInverse minv;           // normalized by the middle element
+    double n0 = 0, n1 = 0;     // int f cos, int f (1 - v.h)^5 cos (ggx_split_sum)
+    double n0_error = 0, n1_error = 0;
+    double objective = 0;      // the fit's objective (Heitz's measure, relative; ltc_fit.cpp)
+    double below_horizon = 0;  // LTC mass below the horizon (of 1)
+    std::array<double, 4> params{};  // the optimizer's (theta, ln m11, ln m22, m13 / m11)
+    int evaluations = 0;
+};
+
+// Fits the LTC of the GGX lobe at (mu_o, alpha) (alpha below kLtcMinAlpha
+// is raised to it). Deterministic: depends on nothing but its arguments.
+LtcFit fit_ggx_ltc(double mu_o, double alpha, Visibility vis, const LtcFitOptions& opt = {});
+
+// The fit's objective at given optimizer parameters (for tests: a fitted
+// texel is a local minimum of this).
+double ltc_objective(double mu_o, double alpha, Visibility vis, const std::array<double, 4>& params,
+                     const LtcFitOptions& opt = {});
+// M^-1 (normalized) from the optimizer's parameters.
+LtcInverse ltc_inverse_from_params(const std::array<double, 4>& params);
+
+// Relative L3 error of n0 D against f cos over the sphere and the LTC mass
+// below the horizon, by a finer quadrature than the fit's (any M^-1).
+struct LtcLobeError {
+    double relative_l3 = 0;
+    double below_horizon = 0;
+};
+LtcLobeError ltc_lobe_error(double mu_o, double alpha, Visibility vis, const Mat3& minv, double n0);
+
+// The fixed bank of polygon lights the integrated-light error uses: squares
+// of several angular sizes in the specular peak, off the peak and near the
+// horizon, placed relative to the mirror direction of wo = (sin, 0, mu_o).
+struct LtcLight {
+    const char* name;
+    std::array<Vec3, 4> vertices;  // unit directions, counter-clockwise seen from the origin
+};
+std::vector<LtcLight> ltc_light_bank(double mu_o);
+inline constexpr std::size_t kLtcLightCount = 10;
+
+// The exact integral of the lobe over each light (the part above the
+// horizon), by adaptive quadrature over the polygon; abs_tol per light.
+std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol);
+
+struct LtcLightError {
+    double max = 0;   // largest |n0' LTC(P) - exact(P)| / n0 over the bank
+    double mean = 0;  // mean over the bank
+    std::vector<double> per_light;
+};
+// The integrated-light error of an LTC (with its stored norm n0_stored)
+// against the exact light, as a fraction of the exact norm n0.
+LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vector<LtcLight>& lights,
+                              const std::vector<double>& exact, double n0);
+
+// Every error figure of one texel of an LTC table (the fit's own, or a
+// foreign table's): what `generate` records and `compare` reports.
+struct LtcTexelReport {
+    double relative_l3 = 0;
+    double below_horizon = 0;
+    double light_max = 0;
+    double light_mean = 0;
+};
+LtcTexelReport ltc_texel_report(double mu_o, double alpha, Visibility vis, const Mat3& minv,
+                                double n0_stored, const LtcFitOptions& opt = {});
+
+
+// ---- Comparing a stored LTC matrix table (src/check/ltc_compare.cpp) ----
+
+struct ExrImage;
+struct LutDescription;
+
+// True for the tables whose channels are an LTC matrix (ltc_1, hdrp_ltc_ggx).
+bool is_ltc_matrix_table(const std::string& id);
+
+struct LtcComparison {
+    std::size_t texels = 0;
+    // Over the texels: the largest integrated-light error (over the light
+    // bank, as a fraction of n0) of the stored matrices, with the exact n0,
+    // and of brdflut's refit at the same texels; and their medians.
+    double stored_light_max = 0, stored_light_median = 0;
+    double refit_light_max = 0, refit_light_median = 0;
+    std::size_t refit_better = 0;  // texels where the refit's error is lower by more than 1e-6
+    double stored_below_horizon_max = 0;
+    std::vector<double> stored_light;  // per texel, storage order
+    std::vector<double> refit_light;
+};
+
+// Reads each texel's matrix from the file (in the layout of its table),
+// and reports its integrated-light error against the exact light of the
+// lobe, next to the refit's. Throws Error for a file with a channel map.
+LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, int threads);
+
+}  // namespace brdflut

@@ -1,0 +1,77 @@
+// `compare` on an LTC matrix table: the light its matrices give for the
+// bank of polygon lights against the exact light, next to a refit's.
+#include <algorithm>
+
+#include "brdflut/error.h"
+#include "brdflut/exr.h"
+#include "brdflut/generate.h"
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/ltc.h"
+#include "brdflut/lut.h"
+
+namespace brdflut {
+
+bool is_ltc_matrix_table(const std::string& id) { return id == "ltc_1" || id == "hdrp_ltc_ggx"; }
+
+namespace {
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+}  // namespace
+
+LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, int threads) {
+    const std::string& id = d.def->id;
+    if (!is_ltc_matrix_table(id)) throw Error("table '" + id + "' is not an LTC matrix table");
+    if (!d.settings.channel_map.empty())
+        throw Error("the integrated-light comparison of '" + id + "' needs the table's own channels (no --channels)");
+    const auto& axes = d.settings.axes;
+    int ir = -1, imu = -1;
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+        if (axes[i].name == "roughness") ir = static_cast<int>(i);
+        if (axes[i].name == "cos_theta") imu = static_cast<int>(i);
+    }
+    if (ir < 0 || imu < 0 || axes.size() != 2) throw Error("an LTC table has the axes roughness and cos_theta");
+    const auto vis_it = d.settings.params.find("visibility");
+    const Visibility vis =
+        visibility_from_string(vis_it == d.settings.params.end() ? "height_correlated" : vis_it->second);
+    const std::size_t nc = img.channel_names.size();
+    const std::size_t w = static_cast<std::size_t>(axes[0].count);
+    const std::size_t n = w * static_cast<std::size_t>(axes[1].count);
+    if (nc < 4 || img.pixels.size() < n * nc) throw Error("an LTC matrix table has 4 channels");
+    LtcComparison out;
+    out.texels = n;
+    out.stored_light.assign(n, 0.0);
+    out.refit_light.assign(n, 0.0);
+    std::vector<double> below(n, 0.0);
+    const bool hdrp = id == "hdrp_ltc_ggx";
+    parallel_for_index(n, threads, [&](std::size_t k) {
+        const int pos[2] = {static_cast<int>(k % w), static_cast<int>(k / w)};
+        const double r = axes[static_cast<std::size_t>(ir)].value(pos[ir]);
+        const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
+        const double* p = &img.pixels[k * nc];
+        // Heitz: (m00, m02, m20, m22) of M^-1 / m11 in glm m[col][row] = (a, c, b, d);
+        // HDRP: (m00, m20, m11, m02) of M^-1 / m22 by rows.
+        const Mat3 minv = hdrp ? Mat3{{{{p[0], 0, p[3]}, {0, p[2], 0}, {p[1], 0, 1}}}}
+                               : LtcInverse{p[0], p[2], p[1], p[3]}.matrix();
+        const double alpha = std::max(alpha_from_perceptual(r), hdrp ? 1e-3 : 0.0);  // as the table
+        const LtcFit fit = fit_ggx_ltc(mu, alpha, vis);
+        const LtcTexelReport stored = ltc_texel_report(mu, alpha, vis, minv, fit.n0);
+        const LtcTexelReport refit = ltc_texel_report(mu, alpha, vis, fit.minv.matrix(), fit.n0);
+        out.stored_light[k] = stored.light_max;
+        out.refit_light[k] = refit.light_max;
+        below[k] = stored.below_horizon;
+    });
+    for (std::size_t k = 0; k < n; ++k) {
+        out.stored_light_max = std::max(out.stored_light_max, out.stored_light[k]);
+        out.refit_light_max = std::max(out.refit_light_max, out.refit_light[k]);
+        out.stored_below_horizon_max = std::max(out.stored_below_horizon_max, below[k]);
+        if (out.refit_light[k] < out.stored_light[k] - 1e-6) ++out.refit_better;  // beyond rounding
+    }
+    out.stored_light_median = median(out.stored_light);
+    out.refit_light_median = median(out.refit_light);
+    return out;
+}
+
+}  // namespace brdflut

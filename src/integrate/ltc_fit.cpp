@@ -1,0 +1,672 @@
+// Fitting an LTC to the GGX lobe by deterministic quadrature, and the
+// error figures of any LTC against the lobe it stands for.
+//
+// Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light Shading
+//   with Linearly Transformed Cosines"
+// Nelder and Mead 1965, "A Simplex Method for Function Minimization"
+//
+// The fit, per texel (nothing depends on other texels or on threads):
+//  1. The target p(w) = f(wo, w) cos(theta) / n0, a density on the upper
+//     hemisphere (n0 = the GGX directional albedo, by ggx_split_sum).
+//  2. A product quadrature over the whole sphere in polar coordinates
+//     (beta, phi) about the lobe's average direction: tan(beta/2) =
+//     w u / (1 - u) with Gauss-Legendre nodes in u on [0, 1] (half the
+//     nodes inside the angular width w of the lobe, the tail out to the
+//     antipode in the rest), and the midpoint rule in phi on [0, pi] (the
+//     lobe is even in y; the rule is spectrally accurate for a smooth
+//     periodic integrand). The average direction and the width come from
+//     a first quadrature of p about the mirror direction: w = s0 / 2 with
+//     s0 = 1 / sqrt(pi p_max), the scale of the cosine whose peak density
+//     equals the lobe's.
+//  3. The objective: Heitz's error measure, J = int |p - D|^3 / (p + D) dw
+//     / int p^2 dw over the sphere (p = 0 below the horizon, so LTC mass
+//     there costs), by quadrature where Heitz samples it. (The relative L3
+//     error, int |p - D|^3 / int p^3, reported for every texel, gave larger
+//     integrated-light errors when used as the objective.)
+//  4. The parameters: M = R(theta) [[m11, 0, m13], [0, m22, 0], [0, 0, 1]]
+//     with R(theta) the rotation about y taking z to (sin theta, 0, cos
+//     theta), optimised as (theta, ln m11, ln m22, m13 / m11): all four
+//     degrees of freedom of a y-symmetric LTC (Heitz fixes theta at the
+//     average direction), invariant to the lobe's scale.
+//  5. The initial guess, computed from the texel alone: theta at the
+//     average direction, m11 = m22 = s0, m13 = 0.
+//  6. Nelder-Mead in double from that guess, restarted from its best
+//     vertex with smaller simplices until a restart no longer improves J.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/ltc.h"
+#include "brdflut/quadrature.h"
+
+namespace brdflut {
+
+namespace {
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+Vec3 normalize(const Vec3& a) {
+    const double l = std::sqrt(dot(a, a));
+    return {a.x / l, a.y / l, a.z / l};
+}
+Vec3 add(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+Vec3 scale(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+
+double clamp_alpha(double alpha) { return std::max(alpha, kLtcMinAlpha); }
+double clamp_mu(double mu) { return std::clamp(mu, kLtcMinMu, 1.0); }
+
+// Quadrature nodes on the sphere with the target's values.
+struct SphereGrid {
+    std::vector<double> x, y, z, w, p;
+    double p3 = 0.0;  // int p^3
+    double p2 = 0.0;
+
+    std::size_t size() const { return x.size(); }
+};
+
+// Coordinates about the lobe: the stereographic projection from the
+// antipode of `axis` (unit, in the x-z plane, above the horizon), scaled by
+// the lobe's widths: (X, Y) = (w1 rho cos(phi), w2 rho sin(phi)) along t1 =
+// (axis.z, 0, -axis.x) and y, R^2 = X^2 + Y^2 = tan^2(beta/2) with beta the
+// angle from the axis, rho = u / (1 - u), u in [0, 1). Each ray phi is a
+// meridian from the axis to its antipode; the measure is
+// dw = 4 w1 w2 rho / (1 + R^2)^2 drho dphi.
+struct LobeFrame {
+    Vec3 axis{0, 0, 1};
+    double w1 = 1.0, w2 = 1.0;
+
+    Vec3 t1() const { return {axis.z, 0.0, -axis.x}; }
+    // tan(beta/2) = k(phi) rho on the ray phi.
+    double k(double phi) const { return std::hypot(w1 * std::cos(phi), w2 * std::sin(phi)); }
+    // The ray's direction in the tangent plane (unit), t1 cos(phi') + y sin(phi').
+    Vec3 tangent(double phi) const {
+        const double c = w1 * std::cos(phi), sn = w2 * std::sin(phi), l = std::hypot(c, sn);
+        const Vec3 a = t1();
+        return {c / l * a.x, sn / l, c / l * a.z};
+    }
+    // The stereographic angle phi of a direction's azimuth phi' about the axis.
+    double phi_of_azimuth(double phi_p) const { return std::atan2(std::sin(phi_p) / w2, std::cos(phi_p) / w1); }
+    Vec3 direction(double beta, const Vec3& t) const {
+        const double sb = std::sin(beta), cb = std::cos(beta);
+        return {sb * t.x + cb * axis.x, sb * t.y, sb * t.z + cb * axis.z};
+    }
+    static double rho_of_u(double u) { return u / (1.0 - u); }
+    static double u_of_rho(double rho) { return std::isinf(rho) ? 1.0 : rho / (1.0 + rho); }
+    // beta on ray phi (through k) of u, and the measure dw / (du dphi).
+    double beta_of_u(double u, double kk) const { return 2.0 * std::atan(kk * rho_of_u(u)); }
+    double measure(double u, double kk) const {
+        const double rho = rho_of_u(u), R2 = kk * kk * rho * rho;
+        return 4.0 * w1 * w2 * rho / ((1.0 + R2) * (1.0 + R2)) / ((1.0 - u) * (1.0 - u));
+    }
+    double u_of_beta(double beta, double kk) const {
+        if (beta >= kPi) return 1.0;
+        return u_of_rho(std::tan(0.5 * beta) / kk);
+    }
+};
+
+// Nodes over the whole sphere: on each ray phi (midpoint rule on [0, pi],
+// doubled: the lobe is even in y) Gauss-Legendre in u on [0, u_h] above the
+// horizon and on [u_h, 1] below it, so that the lobe's cut at the horizon
+// is a panel end, not inside a panel.
+SphereGrid make_grid(const LtcLobe& lobe, double n0, const LobeFrame& f, int radial, int azimuth) {
+    const int below = std::max(6, radial / 3);
+    const GaussLegendre& up = gauss_legendre(radial);
+    const GaussLegendre& low = gauss_legendre(below);
+    SphereGrid g;
+    const std::size_t n = static_cast<std::size_t>(radial + below) * static_cast<std::size_t>(azimuth);
+    g.x.reserve(n);
+    g.y.reserve(n);
+    g.z.reserve(n);
+    g.w.reserve(n);
+    g.p.reserve(n);
+    const double dphi = kPi / azimuth;
+    for (int k = 0; k < azimuth; ++k) {
+        const double phi = (k + 0.5) * dphi;
+        const double kk = f.k(phi);
+        const Vec3 t = f.tangent(phi);
+        // d.z = cos(beta) axis.z + sin(beta) t.z = 0 (axis.z > 0).
+        const double beta_h = std::atan2(f.axis.z, -t.z);
+        const double u_h = f.u_of_beta(beta_h, kk);
+        auto add_panel = [&](const GaussLegendre& rule, double u0, double u1, bool upper) {
+            const double c = 0.5 * (u0 + u1), h = 0.5 * (u1 - u0);
+            for (std::size_t j = 0; j < rule.x.size(); ++j) {
+                const double u = c + h * rule.x[j];
+                const double wt = h * rule.w[j] * f.measure(u, kk) * 2.0 * dphi;
+                const Vec3 d = f.direction(f.beta_of_u(u, kk), t);
+                const double pv = upper ? lobe(d) / n0 : 0.0;
+                g.x.push_back(d.x);
+                g.y.push_back(d.y);
+                g.z.push_back(d.z);
+                g.w.push_back(wt);
+                g.p.push_back(pv);
+                g.p3 += wt * pv * pv * pv;
+                g.p2 += wt * pv * pv;
+            }
+        };
+        add_panel(up, 0.0, u_h, true);
+        add_panel(low, u_h, 1.0, false);
+    }
+    return g;
+}
+
+// The quadrature of one texel and its initial guess.
+struct Setup {
+    SphereGrid grid;
+    LobeFrame frame;
+    std::array<double, 4> x0{};  // initial parameters
+    std::array<double, 4> step{};  // initial simplex steps
+};
+
+// The lobe's peak and widths. An isotropic lobe peaks in the plane of
+// incidence: p is scanned there at offsets from the mirror direction
+// spaced evenly in log(offset) from 1e-12 to 1 radian on both sides, and
+// the best bracket refined by golden section. (The peak, not the average
+// direction: at grazing view a narrow lobe has a long tail toward the
+// normal that moves its average far from its peak.) The widths are the
+// angles from the peak at which p falls to half its peak, in the plane of
+// incidence (the mean of both sides) and across it, found by bisection in
+// log(angle).
+struct LobeShape {
+    LobeFrame frame;
+    double theta = 0.0;       // the peak's signed angle from the normal (+x positive)
+    double half_in = 1.0;     // half-maximum angle in the plane of incidence
+    double half_across = 1.0; // ... across it
+};
+
+LobeShape lobe_shape(const LtcLobe& lobe, double n0) {
+    const double theta_m = -std::acos(lobe.mu_o);  // mirror direction, at -x
+    auto at = [&](double theta) { return lobe(Vec3{std::sin(theta), 0.0, std::cos(theta)}) / n0; };
+    const double lo_theta = -0.5 * kPi, hi_theta = 0.5 * kPi;
+    std::vector<double> cand{theta_m};
+    for (int k = 0; k <= 120; ++k) {
+        const double off = std::pow(10.0, -12.0 + 0.1 * k);
+        for (double t : {theta_m - off, theta_m + off})
+            if (t > lo_theta && t < hi_theta) cand.push_back(t);
+    }
+    std::sort(cand.begin(), cand.end());
+    std::size_t best = 0;
+    double pbest = -1.0;
+    for (std::size_t i = 0; i < cand.size(); ++i) {
+        const double v = at(cand[i]);
+        if (v > pbest) {
+            pbest = v;
+            best = i;
+        }
+    }
+    double a = best > 0 ? cand[best - 1] : lo_theta;
+    double b = best + 1 < cand.size() ? cand[best + 1] : hi_theta;
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    double f1 = at(x1), f2 = at(x2);
+    for (int it = 0; it < 100 && b - a > 1e-16; ++it) {
+        if (f1 > f2) {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = at(x1);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = at(x2);
+        }
+    }
+    double theta = f1 > f2 ? x1 : x2;
+    double pmax = std::max(f1, f2);
+    if (pbest > pmax) {
+        theta = cand[best];
+        pmax = pbest;
+    }
+    // Keep the axis above the horizon (the grid splits its rays there).
+    theta = std::clamp(theta, -0.5 * kPi + 1e-12, 0.5 * kPi - 1e-12);
+    LobeShape out;
+    out.theta = theta;
+    const Vec3 axis{std::sin(theta), 0.0, std::cos(theta)};
+    const Vec3 t1{axis.z, 0.0, -axis.x};
+    auto half_angle = [&](const Vec3& dir) {
+        double lo = -14.0, hi = std::log10(kPi);
+        auto p_at = [&](double l) {
+            const double d = std::pow(10.0, l);
+            const Vec3 w{std::cos(d) * axis.x + std::sin(d) * dir.x, std::sin(d) * dir.y,
+                         std::cos(d) * axis.z + std::sin(d) * dir.z};
+            return lobe(w) / n0;
+        };
+        if (p_at(hi) > 0.5 * pmax) return std::pow(10.0, hi);
+        if (p_at(lo) < 0.5 * pmax) return std::pow(10.0, lo);
+        for (int it = 0; it < 60; ++it) {
+            const double m = 0.5 * (lo + hi);
+            (p_at(m) > 0.5 * pmax ? lo : hi) = m;
+        }
+        return std::pow(10.0, 0.5 * (lo + hi));
+    };
+    out.half_in = 0.5 * (half_angle(t1) + half_angle(Vec3{-t1.x, 0.0, -t1.z}));
+    out.half_across = half_angle(Vec3{0.0, 1.0, 0.0});
+    out.frame.axis = axis;
+    // R = tan(beta/2) = beta/2 at the half-maximum angle when rho = 1.
+    out.frame.w1 = std::clamp(0.5 * out.half_in, 1e-14, 1.0);
+    out.frame.w2 = std::clamp(0.5 * out.half_across, 1e-14, 1.0);
+    return out;
+}
+
+// A cosine scaled by s along one axis falls to half its peak at the angle
+// atan(s sqrt(sqrt(2) - 1)) from its axis.
+constexpr double kHalfMaxScale = 0.6435942529055827;  // sqrt(sqrt(2) - 1)
+
+Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth) {
+    Setup s;
+    const LobeShape shape = lobe_shape(lobe, n0);
+    s.frame = shape.frame;
+    const double m11 = std::clamp(std::tan(std::min(shape.half_in, 1.5)) / kHalfMaxScale, 1e-14, 4.0);
+    const double m22 = std::clamp(std::tan(std::min(shape.half_across, 1.5)) / kHalfMaxScale, 1e-14, 4.0);
+    s.x0 = {shape.theta, std::log(m11), std::log(m22), 0.0};
+    s.step = {0.5 * std::min(m11, 0.5), 0.3, 0.3, 0.3};
+    s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
+    return s;
+}
+
+// D of the LTC at grid node i (minv with middle element 1).
+inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv, double det_over_pi) {
+    const auto& m = minv.m;
+    const double x = g.x[i], y = g.y[i], z = g.z[i];
+    const double px = m[0][0] * x + m[0][2] * z;
+    const double pz = m[2][0] * x + m[2][2] * z;
+    const double l2 = px * px + y * y + pz * pz;
+    return pz > 0.0 ? pz * det_over_pi / (l2 * l2) : 0.0;
+}
+
+// The fit's objective, Heitz's error measure computed by quadrature instead
+// of by sampling: J = int |p - D|^3 / (p + D) dw / int p^2 dw.
+double objective(const SphereGrid& g, const Mat3& minv) {
+    const double det = std::abs(minv.det()) / kPi;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const double d = grid_density(g, i, minv, det);
+        const double e = std::abs(g.p[i] - d), den = g.p[i] + d;
+        if (den > 0.0) sum += g.w[i] * e * e * e / den;
+    }
+    return sum / g.p2;
+}
+
+// (int |p - D|^3 dw / int p^3 dw)^(1/3).
+double relative_l3(const SphereGrid& g, const Mat3& minv) {
+    const double det = std::abs(minv.det()) / kPi;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const double e = std::abs(g.p[i] - grid_density(g, i, minv, det));
+        sum += g.w[i] * e * e * e;
+    }
+    return std::cbrt(sum / g.p3);
+}
+
+// Nelder-Mead on R^4 with the standard coefficients (reflection 1,
+// expansion 2, contraction 1/2, shrink 1/2), from x0 with steps `step`.
+template <class F>
+std::array<double, 4> nelder_mead(F&& f, const std::array<double, 4>& x0, const std::array<double, 4>& step,
+                                  double& fbest, int max_evals, int& evals) {
+    constexpr int N = 4;
+    std::array<std::array<double, N>, N + 1> x;
+    std::array<double, N + 1> fx;
+    x[0] = x0;
+    fx[0] = f(x0);
+    ++evals;
+    for (int i = 0; i < N; ++i) {
+        x[i + 1] = x0;
+        x[i + 1][i] += step[i];
+        fx[i + 1] = f(x[i + 1]);
+        ++evals;
+    }
+    std::array<int, N + 1> order;
+    int budget = max_evals;
+    while (budget > 0) {
+        std::iota(order.begin(), order.end(), 0);
+        // Stable order by value then index, so ties resolve the same way always.
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return fx[a] < fx[b]; });
+        const int best = order[0], worst = order[N], second = order[N - 1];
+        const double spread = fx[worst] - fx[best];
+        double size = 0.0;
+        for (int i = 0; i <= N; ++i)
+            for (int k = 0; k < N; ++k) size = std::max(size, std::abs(x[i][k] - x[best][k]));
+        if (spread <= 1e-13 * std::abs(fx[best]) + 1e-300 || size < 1e-9) break;
+        std::array<double, N> c{};
+        for (int i = 0; i <= N; ++i)
+            if (i != worst)
+                for (int k = 0; k < N; ++k) c[k] += x[i][k] / N;
+        auto along = [&](double t) {
+            std::array<double, N> y;
+            for (int k = 0; k < N; ++k) y[k] = c[k] + t * (x[worst][k] - c[k]);
+            return y;
+        };
+        const std::array<double, N> xr = along(-1.0);
+        const double fr = f(xr);
+        --budget;
+        if (fr < fx[best]) {
+            const std::array<double, N> xe = along(-2.0);
+            const double fe = f(xe);
+            --budget;
+            if (fe < fr) {
+                x[worst] = xe;
+                fx[worst] = fe;
+            } else {
+                x[worst] = xr;
+                fx[worst] = fr;
+            }
+        } else if (fr < fx[second]) {
+            x[worst] = xr;
+            fx[worst] = fr;
+        } else {
+            const bool outside = fr < fx[worst];
+            const std::array<double, N> xc = along(outside ? -0.5 : 0.5);
+            const double fc = f(xc);
+            --budget;
+            if (fc < (outside ? fr : fx[worst])) {
+                x[worst] = xc;
+                fx[worst] = fc;
+            } else {
+                for (int i = 0; i <= N; ++i) {
+                    if (i == best) continue;
+                    for (int k = 0; k < N; ++k) x[i][k] = x[best][k] + 0.5 * (x[i][k] - x[best][k]);
+                    fx[i] = f(x[i]);
+                    --budget;
+                }
+            }
+        }
+    }
+    const int best = static_cast<int>(std::min_element(fx.begin(), fx.end()) - fx.begin());
+    evals += max_evals - budget;
+    fbest = fx[best];
+    return x[best];
+}
+
+}  // namespace
+
+LtcLobe::LtcLobe(double mu, double alpha, Visibility v)
+    : ggx{clamp_alpha(alpha)}, vis(v), wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)) {}
+
+// f cos(theta_i) = D(h) G2(o, i) / (4 mu_o), h = wo + wi (not normalized).
+// D = a^2 / (pi (sin^2 + a^2 cos^2)^2) of the half vector's angle, written
+// with sin^2 from h.x^2 + h.y^2 instead of 1 - cos^2: at alpha = 1e-5 the
+// peak is at sin^2 ~ 1e-10, which 1 - cos^2 resolves only to ~1e-6.
+double LtcLobe::operator()(const Vec3& wi) const {
+    if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
+    const Vec3 h = add(wo, wi);
+    if (h.z <= 0.0) return 0.0;
+    const double a2 = ggx.alpha * ggx.alpha;
+    const double s2 = h.x * h.x + h.y * h.y, c2 = h.z * h.z, l2 = s2 + c2;
+    const double t = s2 + a2 * c2;
+    const double D = a2 * l2 * l2 / (kPi * t * t);
+    return D * ggx.G2(mu_o, wi.z, vis) / (4.0 * mu_o);
+}
+
+LtcFitOptions ltc_fit_options(int quality_level) {
+    LtcFitOptions o;
+    if (quality_level <= 0) {
+        o.radial_nodes = 16;
+        o.azimuth_nodes = 10;
+        o.light_tolerance = 1e-5;
+    } else if (quality_level >= 2) {
+        o.radial_nodes = 56;
+        o.azimuth_nodes = 32;
+        o.light_tolerance = 1e-9;
+    }
+    return o;
+}
+
+namespace {
+// The LTC's mass below the horizon: the hemisphere z > 0 maps under M^-1 to
+// the half space whose normal is row 2 of M, and the clamped cosine's
+// integral over a hemisphere whose axis has cosine c with the normal is
+// (1 + c) / 2.
+double below_horizon_of(const LtcInverse& minv) {
+    const Mat3 m = minv.matrix().inverse();
+    const Vec3 n = normalize(Vec3{m.m[2][0], m.m[2][1], m.m[2][2]});
+    return 0.5 * (1.0 - n.z);
+}
+}  // namespace
+
+LtcInverse ltc_inverse_from_params(const std::array<double, 4>& p) {
+    const double ct = std::cos(p[0]), st = std::sin(p[0]);
+    const double m11 = std::exp(p[1]), m22 = std::exp(p[2]), m13 = p[3] * m11;
+    const Mat3 r{{{{ct, 0, st}, {0, 1, 0}, {-st, 0, ct}}}};
+    const Mat3 s{{{{m11, 0, m13}, {0, m22, 0}, {0, 0, 1}}}};
+    return LtcInverse::from_matrix((r * s).inverse());
+}
+
+double ltc_objective(double mu, double alpha, Visibility vis, const std::array<double, 4>& params,
+                     const LtcFitOptions& opt) {
+    const LtcLobe lobe(mu, alpha, vis);
+    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
+    const double n0 = e.value[0] + e.value[1];
+    const Setup s = make_setup(lobe, n0, opt.radial_nodes, opt.azimuth_nodes);
+    return objective(s.grid, ltc_inverse_from_params(params).matrix());
+}
+
+LtcFit fit_ggx_ltc(double mu, double alpha, Visibility vis, const LtcFitOptions& opt) {
+    const LtcLobe lobe(mu, alpha, vis);
+    LtcFit out;
+    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
+    out.n0 = e.value[0] + e.value[1];
+    out.n1 = e.value[1];
+    out.n0_error = e.error[0] + e.error[1];
+    out.n1_error = e.error[1];
+    const Setup s = make_setup(lobe, out.n0, opt.radial_nodes, opt.azimuth_nodes);
+    auto f = [&](const std::array<double, 4>& p) { return objective(s.grid, ltc_inverse_from_params(p).matrix()); };
+
+    int evals = 0;
+    // Nelder-Mead from x0, restarted from its best vertex with smaller
+    // simplices until a restart no longer improves J.
+    auto descend = [&](std::array<double, 4> x, const std::array<double, 4>& step0, double& fx) {
+        fx = f(x);
+        ++evals;
+        double shrink = 1.0;
+        for (int restart = 0; restart < 8; ++restart) {
+            double fn = 0.0;
+            std::array<double, 4> steps = step0;
+            for (double& v : steps) v *= shrink;
+            const std::array<double, 4> xn = nelder_mead(f, x, steps, fn, 800, evals);
+            const bool improved = fn < fx * (1.0 - 1e-9);
+            if (fn < fx) {
+                x = xn;
+                fx = fn;
+            }
+            if (!improved && restart > 0) break;
+            shrink *= 0.2;
+        }
+        return x;
+    };
+    double fx = 0.0;
+    std::array<double, 4> x = descend(s.x0, s.step, fx);
+    // A lobe too wide for its half-maximum widths to place the cosine (rough
+    // lobes at grazing view, nearly uniform over the hemisphere) can send
+    // the simplex to a cosine turned below the horizon: then start again
+    // from the unit cosine turned to the peak, and keep the better fit.
+    if (below_horizon_of(ltc_inverse_from_params(x)) > 0.05) {
+        double f2 = 0.0;
+        const std::array<double, 4> x2 = descend({s.x0[0], 0.0, 0.0, 0.0}, {0.25, 0.3, 0.3, 0.3}, f2);
+        if (f2 < fx) {
+            x = x2;
+            fx = f2;
+        }
+    }
+    out.params = x;
+    out.minv = ltc_inverse_from_params(x);
+    out.objective = fx;
+    out.below_horizon = below_horizon_of(out.minv);
+    out.evaluations = evals;
+    return out;
+}
+
+LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3& minv, double n0) {
+    const LtcLobe lobe(mu, alpha, vis);
+    const LtcFitOptions fine = ltc_fit_options(2);
+    const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
+    LtcLobeError e;
+    const Mat3 scaled = LtcInverse::from_matrix(minv).matrix();
+    e.relative_l3 = relative_l3(s.grid, scaled);
+    e.below_horizon = below_horizon_of(LtcInverse::from_matrix(minv));
+    return e;
+}
+
+// ---- The light bank ----
+
+namespace {
+// A square light of angular half-size sigma centred on direction c, its
+// edges along e1, e2 (c, e1, e2 orthonormal), counter-clockwise seen from
+// the origin.
+LtcLight square(const char* name, const Vec3& c_in, double sigma_deg) {
+    const Vec3 c = normalize(c_in);
+    const Vec3 up = std::abs(c.z) < 0.999 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    const Vec3 e2 = normalize(cross(up, c));
+    const Vec3 e1 = cross(e2, c);
+    const double t = std::tan(sigma_deg * kPi / 180.0);
+    LtcLight l{name, {}};
+    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int i = 0; i < 4; ++i)
+        l.vertices[static_cast<std::size_t>(i)] =
+            normalize(add(c, add(scale(e1, t * sx[i]), scale(e2, t * sy[i]))));
+    return l;
+}
+Vec3 rotate_y(const Vec3& v, double deg) {  // toward +x for positive angles
+    const double a = deg * kPi / 180.0, c = std::cos(a), s = std::sin(a);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+Vec3 from_angles(double elevation_deg, double phi_deg) {
+    const double e = elevation_deg * kPi / 180.0, p = phi_deg * kPi / 180.0;
+    return {std::cos(e) * std::cos(p), std::cos(e) * std::sin(p), std::sin(e)};
+}
+}  // namespace
+
+std::vector<LtcLight> ltc_light_bank(double mu) {
+    mu = clamp_mu(mu);
+    const double s = safe_sqrt(1.0 - mu * mu);
+    const Vec3 r{-s, 0.0, mu};  // mirror direction
+    return {
+        square("peak 1 deg", r, 1.0),
+        square("peak 5 deg", r, 5.0),
+        square("peak 15 deg", r, 15.0),
+        square("peak 40 deg", r, 40.0),
+        square("off-peak 30 deg toward the view, 10 deg", rotate_y(r, 30.0), 10.0),
+        square("off-peak 90 deg in azimuth, 10 deg", Vec3{0.0, s, mu}, 10.0),
+        square("off-peak 45 deg toward the view, 30 deg", rotate_y(r, 45.0), 30.0),
+        square("horizon, mirror side, 10 deg", from_angles(5.0, 180.0), 10.0),
+        square("horizon, side, 10 deg", from_angles(5.0, 90.0), 10.0),
+        square("overhead 60 deg", Vec3{0, 0, 1}, 60.0),
+    };
+}
+
+namespace {
+// The interval of beta in [0, pi] where e . d(beta) >= 0 for d(beta) =
+// cos(beta) a + sin(beta) t: A cos(beta) + B sin(beta) = R cos(beta - b0)
+// >= 0 on [b0 - pi/2, b0 + pi/2] (mod 2 pi), which meets [0, pi] in one
+// interval.
+void clip_interval(double A, double B, double& lo, double& hi) {
+    if (A == 0.0 && B == 0.0) return;
+    const double b0 = std::atan2(B, A);
+    const double half = 0.5 * kPi;
+    double l, h;
+    if (b0 >= -half) {
+        l = std::max(0.0, b0 - half);
+        h = std::min(kPi, b0 + half);
+    } else {
+        l = b0 + 3.0 * half;
+        h = kPi;
+    }
+    lo = std::max(lo, l);
+    hi = std::min(hi, h);
+}
+
+// The exact light of one convex polygon: in the lobe's polar coordinates,
+// each ray phi crosses the polygon's cone (and the upper hemisphere) in
+// one interval of beta, integrated in u by adaptive Gauss-Kronrod; phi by
+// adaptive Gauss-Kronrod between the vertices' azimuths.
+double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& light, double abs_tol) {
+    const std::size_t n = light.vertices.size();
+    std::vector<Vec3> e;  // inward normals of the edge planes, and the horizon
+    Vec3 centroid{};
+    for (const Vec3& v : light.vertices) centroid = add(centroid, v);
+    for (std::size_t i = 0; i < n; ++i) {
+        Vec3 c = cross(light.vertices[i], light.vertices[(i + 1) % n]);
+        if (dot(c, centroid) < 0.0) c = scale(c, -1.0);
+        e.push_back(c);
+    }
+    e.push_back(Vec3{0, 0, 1});
+    const Vec3 t1 = f.t1();
+    const Vec3 y{0, 1, 0};
+    std::vector<double> breaks{0.0, kTwoPi};
+    for (const Vec3& v : light.vertices) {
+        double phi = f.phi_of_azimuth(std::atan2(dot(v, y), dot(v, t1)));
+        if (phi < 0.0) phi += kTwoPi;
+        breaks.push_back(phi);
+    }
+    std::sort(breaks.begin(), breaks.end());
+    AdaptiveOptions outer;
+    outer.abs_tol = 0.5 * abs_tol / static_cast<double>(breaks.size() - 1);
+    outer.max_intervals = 200;
+    AdaptiveOptions inner;
+    inner.abs_tol = 0.5 * abs_tol / kTwoPi;
+    inner.max_intervals = 100;
+    auto ray = [&](double phi) {
+        const Vec3 t = f.tangent(phi);
+        const double kk = f.k(phi);
+        double lo = 0.0, hi = kPi;
+        for (const Vec3& c : e) clip_interval(dot(c, f.axis), dot(c, t), lo, hi);
+        if (!(hi > lo)) return std::array<double, 1>{0.0};
+        const double u0 = f.u_of_beta(lo, kk), u1 = f.u_of_beta(hi, kk);
+        const Estimate<1> in = integrate_adaptive<1>(
+            [&](double u) {
+                const Vec3 d = f.direction(f.beta_of_u(u, kk), t);
+                return std::array<double, 1>{lobe(d) * f.measure(u, kk)};
+            },
+            u0, u1, inner);
+        return in.value;
+    };
+    double sum = 0.0;
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+        if (breaks[k + 1] > breaks[k]) sum += integrate_adaptive<1>(ray, breaks[k], breaks[k + 1], outer).value[0];
+    return sum;
+}
+}  // namespace
+
+std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol) {
+    const double n0 = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, lobe.vis, kGgxTableTolerance).value[0] +
+                      ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, lobe.vis, kGgxTableTolerance).value[1];
+    const LobeFrame f = lobe_shape(lobe, n0).frame;
+    std::vector<double> out;
+    for (const LtcLight& l : lights) out.push_back(polygon_light(lobe, f, l, abs_tol));
+    return out;
+}
+
+LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vector<LtcLight>& lights,
+                              const std::vector<double>& exact, double n0) {
+    LtcLightError e;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const double ltc = n0_stored * ltc_polygon_integral(minv, lights[i].vertices.data(), 4);
+        const double err = std::abs(ltc - exact[i]) / n0;
+        e.per_light.push_back(err);
+        e.max = std::max(e.max, err);
+        e.mean += err / static_cast<double>(lights.size());
+    }
+    return e;
+}
+
+LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const Mat3& minv, double n0_stored,
+                                const LtcFitOptions& opt) {
+    const LtcLobe lobe(mu, alpha, vis);
+    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
+    const double n0 = e.value[0] + e.value[1];
+    LtcTexelReport r;
+    const LtcLobeError le = ltc_lobe_error(mu, alpha, vis, minv, n0);
+    r.relative_l3 = le.relative_l3;
+    r.below_horizon = le.below_horizon;
+    const std::vector<LtcLight> bank = ltc_light_bank(lobe.mu_o);
+    const std::vector<double> exact = ltc_exact_light(lobe, bank, opt.light_tolerance * n0);
+    const LtcLightError l = ltc_light_error(minv, n0_stored, bank, exact, n0);
+    r.light_max = l.max;
+    r.light_mean = l.mean;
+    return r;
+}
+
+}  // namespace brdflut

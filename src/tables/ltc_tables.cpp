@@ -1,0 +1,219 @@
+// LTC area-light tables fitted to the GGX lobe, in the layouts engines load.
+//
+// Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light Shading
+//   with Linearly Transformed Cosines" (ltc_1, ltc_2: selfshadow/ltc_code
+//   fit/fitLTC.cpp packTab, loaded by three.js, Blender EEVEE, Godot)
+// Unity HDRP LTCAreaLight.hlsl (LTCSampleMatrix: the transposed inverse
+//   divided by its m22, as _m00_m02_m11_m20 of the transpose)
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "brdflut/error.h"
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/ltc.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+namespace {
+
+enum class Layout {
+    heitz_matrix,  // ltc_1: (m00, m02, m20, m22) of M^-1 / M^-1[1][1], glm m[col][row]
+    heitz_norms,   // ltc_2: (n0, n1, 0, sphere form factor)
+    hdrp_matrix,   // (m00, m20, m11, m02) of M^-1 / M^-1[2][2], HLSL _mRC
+    report,        // ltc_ggx_error: the per-texel error figures
+};
+
+// The figures each texel's fit leaves for the table-wide summary, one slot
+// per texel (written only by that texel's evaluation).
+struct FitFigures {
+    std::vector<double> objective, below_horizon;
+};
+
+class LtcEvaluator final : public TexelEvaluator {
+public:
+    LtcEvaluator(Layout layout, Visibility vis, const LtcFitOptions& opt, std::shared_ptr<FitFigures> figures)
+        : layout_(layout), vis_(vis), opt_(opt), figures_(std::move(figures)) {}
+
+    // coords: (roughness, cos_theta) in the definition's order.
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        const double r = c[0], mu = c[1];
+        // HDRP fits at alpha >= 1e-3 (its LTCTableGenerator); Heitz at 1e-5.
+        const double alpha = std::max(alpha_from_perceptual(r), layout_ == Layout::hdrp_matrix ? 1e-3 : 0.0);
+        TexelValue out;
+        const LtcFit fit = fit_ggx_ltc(mu, alpha, vis_, opt_);
+        if (figures_ && texel < figures_->objective.size()) {
+            figures_->objective[texel] = fit.objective;
+            figures_->below_horizon[texel] = fit.below_horizon;
+        }
+        const LtcInverse& m = fit.minv;
+        switch (layout_) {
+            case Layout::heitz_matrix:
+                out.value = {m.a, m.c, m.b, m.d};
+                break;
+            case Layout::heitz_norms:
+                // The sphere table's own axes are the texel's normalized
+                // coordinates: z = 2 u_x - 1 = 2 r - 1, len = u_y = sqrt(1 - mu).
+                out.value = {fit.n0, fit.n1, 0.0, sphere_horizon_form_factor(2.0 * r - 1.0, safe_sqrt(1.0 - mu))};
+                out.error = {fit.n0_error, fit.n1_error, 0.0, 0.0};
+                break;
+            case Layout::hdrp_matrix:
+                out.value = {m.a / m.d, m.c / m.d, 1.0 / m.d, m.b / m.d};
+                break;
+            case Layout::report: {
+                const LtcTexelReport rep = ltc_texel_report(mu, alpha, vis_, m.matrix(), fit.n0, opt_);
+                out.value = {rep.relative_l3, rep.below_horizon, rep.light_max, rep.light_mean};
+                break;
+            }
+        }
+        return out;
+    }
+
+private:
+    Layout layout_;
+    Visibility vis_;
+    LtcFitOptions opt_;
+    std::shared_ptr<FitFigures> figures_;
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+const char* kRule =
+    "per texel: Nelder-Mead in double on all four parameters of a y-symmetric LTC from an initial "
+    "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
+    "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure) by "
+    "Gauss-Legendre product quadrature in stereographic coordinates about the lobe's peak, split at "
+    "the horizon; n0, n1 by the ggx_dfg quadrature";
+
+ModelOption visibility_option() {
+    return {"visibility", "shadowing-masking term of the fitted GGX lobe: height_correlated Smith G2 or separable",
+            "height_correlated", {"height_correlated", "separable"}};
+}
+
+AxisSpec roughness_axis() {
+    return {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+            "perceptual roughness r; GGX alpha = max(r^2, 1e-5)"};
+}
+
+// Rows uniform in sqrt(1 - cos theta): cos_theta from 1 down to 0, squared
+// warp (mu = 1 - u^2), end points; the lobe is evaluated at mu >= cos(1.57).
+AxisSpec view_axis() {
+    return {Axis{"cos_theta", 1.0, 0.0, 64, Placement::endpoints, Warp::square}, 0.0, 1.0,
+            "cos(theta_o); rows at u = sqrt(1 - cos(theta_o)); the lobe is fitted at cos(theta_o) >= cos(1.57)"};
+}
+
+nlohmann::json ltc_model(Visibility vis, const std::string& layout) {
+    return {{"brdf", "GGX microfacet, single scattering, fitted by a linearly transformed cosine"},
+            {"distribution", "ggx"},
+            {"visibility", to_string(vis)},
+            {"fresnel", "1 (n1 carries the Schlick moment)"},
+            {"roughness", layout == "hdrp" ? "alpha = max(perceptual_roughness^2, 1e-3)"
+                                           : "alpha = max(perceptual_roughness^2, 1e-5)"},
+            {"layout", layout},
+            {"frame", "normal +z, view (sin theta, 0, cos theta); M^-1 acts on column vectors in this frame"}};
+}
+
+int quality_level(Quality q) { return q == Quality::draft ? 0 : q == Quality::reference ? 2 : 1; }
+
+struct Entry {
+    Layout layout;
+    std::string id, preset, description, layout_text;
+    std::vector<std::string> channels;
+};
+
+TableDefinition make(const Entry& e) {
+    TableDefinition d;
+    d.id = e.id;
+    d.description = e.description;
+    d.axes = {roughness_axis(), view_axis()};
+    d.channels = e.channels;
+    d.options = {visibility_option()};
+    d.preset = e.preset;
+    const Layout layout = e.layout;
+    const std::string layout_text = e.layout_text;
+    const std::string preset = e.preset;
+    d.prepare = [layout, layout_text, preset](const TableSettings& s) {
+        if (s.method == Method::monte_carlo)
+            throw Error("LTC tables are fitted by quadrature only; --method monte_carlo is not allowed");
+        const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
+        const LtcFitOptions opt = ltc_fit_options(quality_level(s.quality));
+        std::size_t texels = 1;
+        for (const Axis& a : s.axes) texels *= static_cast<std::size_t>(a.count);
+        auto figures = std::make_shared<FitFigures>();
+        figures->objective.assign(texels, 0.0);
+        figures->below_horizon.assign(texels, 0.0);
+        PreparedTable p;
+        p.evaluator = std::make_unique<LtcEvaluator>(layout, vis, opt, figures);
+        p.model = ltc_model(vis, layout == Layout::hdrp_matrix ? "hdrp" : layout_text);
+        if (layout == Layout::hdrp_matrix) p.model["layout"] = layout_text;
+        p.model["preset"] = preset;
+        p.model["engine_source"] = layout == Layout::hdrp_matrix
+                                       ? "Unity-Technologies/Graphics HDRP Runtime/Material/LTCAreaLight/LTCAreaLight.hlsl"
+                                       : "selfshadow/ltc_code fit/fitLTC.cpp (packTab); three.js "
+                                         "examples/jsm/lights/RectAreaLightTexturesLib.js";
+        p.method = {{"rule", kRule},
+                    {"objective_nodes", {{"radial", opt.radial_nodes}, {"azimuth", opt.azimuth_nodes}}}};
+        if (layout == Layout::report)
+            p.method["lights"] = "the bank of ltc_light_bank: squares of 1 to 60 degrees in the peak, off "
+                                 "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
+                                 "the polygon, relative tolerance " +
+                                 std::to_string(opt.light_tolerance);
+        p.finish = [figures, layout](Table& t) {
+            nlohmann::json fe;
+            fe["objective_max"] = *std::max_element(figures->objective.begin(), figures->objective.end());
+            fe["objective_median"] = median(figures->objective);
+            fe["below_horizon_max"] =
+                *std::max_element(figures->below_horizon.begin(), figures->below_horizon.end());
+            if (layout == Layout::report) {
+                const char* names[4] = {"relative_l3", "below_horizon", "light_error_max", "light_error_mean"};
+                for (int c = 0; c < 4; ++c) {
+                    std::vector<double> v;
+                    for (std::size_t k = 0; k < t.texel_count(); ++k) v.push_back(t.at(k, c));
+                    fe[std::string(names[c]) + "_max"] = *std::max_element(v.begin(), v.end());
+                    fe[std::string(names[c]) + "_median"] = median(v);
+                }
+            }
+            t.method["fit_error"] = fe;
+        };
+        return p;
+    };
+    return d;
+}
+
+}  // namespace
+
+void register_ltc_tables(std::vector<TableDefinition>& out) {
+    out.push_back(make({Layout::heitz_matrix, "ltc_1", "ltc",
+                        "Heitz LTC ltc_1: the inverse matrix of the GGX fit divided by its middle element",
+                        "Heitz ltc_1 (three.js LTC_MAT_1, EEVEE, Godot): shader mat3(vec3(R, 0, G), vec3(0, 1, 0), "
+                        "vec3(B, 0, A))",
+                        {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])", "m02 (column 0, row 2)",
+                         "m20 (column 2, row 0)", "m22"}}));
+    out.push_back(make({Layout::heitz_norms, "ltc_2", "ltc",
+                        "Heitz LTC ltc_2: norm, Fresnel moment and the horizon-clipped sphere form factor",
+                        "Heitz ltc_2 (three.js LTC_MAT_2): specular = n0 F0 + n1 (1 - F0) times the LTC "
+                        "integral; A on its own axes",
+                        {"n0: integral of f cos(theta_i) dw_i (= ggx_albedo)",
+                         "n1: integral of f (1 - v.h)^5 cos(theta_i) dw_i (= ggx_dfg B)", "unused: 0",
+                         "sphere form factor clipped to the horizon at z = 2 u_x - 1 (cosine of the average "
+                         "light direction), len = u_y (its length)"}}));
+    out.push_back(make({Layout::report, "ltc_ggx_error", "ltc",
+                        "Per-texel error of the GGX LTC fit (the texels of ltc_1 and ltc_2)",
+                        "error report on the grid of ltc_1",
+                        {"relative L3 error of n0 D against f cos over the sphere",
+                         "LTC mass below the horizon (of 1)",
+                         "largest integrated-light error over the light bank, as a fraction of n0",
+                         "mean integrated-light error over the light bank, as a fraction of n0"}}));
+    out.push_back(make({Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp_ltc",
+                        "HDRP LTC GGX matrix: the inverse divided by its m22 (alpha >= 1e-3)",
+                        "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the "
+                        "transposed inverse",
+                        {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)",
+                         "m11 (row 1, column 1)", "m02 (row 0, column 2)"}}));
+}
+
+}  // namespace brdflut

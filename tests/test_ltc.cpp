@@ -1,0 +1,302 @@
+// LTC: the distribution, the polygon integral, the sphere form factor, the
+// fit (local optimum, smoothness, norms), Heitz's published table, and
+// thread independence of the tables.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/generate.h"
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/ltc.h"
+#include "brdflut/quadrature.h"
+#include "brdflut/verify.h"
+
+namespace brdflut {
+namespace {
+
+Vec3 normalized(const Vec3& v) {
+    const double l = std::sqrt(dot(v, v));
+    return {v.x / l, v.y / l, v.z / l};
+}
+
+// Integral of g(w) over the spherical triangle (a, b, c) by Gauss-Legendre in
+// the planar triangle's collapsed coordinates (dw = |n . x| / |x|^3 dA): an
+// estimator independent of the edge formula.
+template <class G>
+double triangle_quadrature(const Vec3& a, const Vec3& b, const Vec3& c, G&& g, int n = 160) {
+    const GaussLegendre& gl = gauss_legendre(n);
+    const Vec3 ab{b.x - a.x, b.y - a.y, b.z - a.z}, bc{c.x - b.x, c.y - b.y, c.z - b.z};
+    const Vec3 nrm{ab.y * bc.z - ab.z * bc.y, ab.z * bc.x - ab.x * bc.z, ab.x * bc.y - ab.y * bc.x};
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double s = 0.5 * (gl.x[i] + 1.0);
+        for (int j = 0; j < n; ++j) {
+            const double t = 0.5 * (gl.x[j] + 1.0);
+            const Vec3 x{a.x + s * ab.x + s * t * bc.x, a.y + s * ab.y + s * t * bc.y, a.z + s * ab.z + s * t * bc.z};
+            const double l2 = dot(x, x), l = std::sqrt(l2);
+            const double dw = std::abs(dot(nrm, x)) * s / (l2 * l);
+            sum += 0.25 * gl.w[i] * gl.w[j] * dw * g(Vec3{x.x / l, x.y / l, x.z / l});
+        }
+    }
+    return sum;
+}
+
+// A planar quad (corners of a square of half-size tan(sigma) on the plane
+// tangent to c) integrated as two triangles.
+template <class G>
+double quad_quadrature(const std::array<Vec3, 4>& v, G&& g) {
+    return triangle_quadrature(v[0], v[1], v[2], g) + triangle_quadrature(v[0], v[2], v[3], g);
+}
+
+std::array<Vec3, 4> square_light(const Vec3& c_in, double sigma) {
+    const Vec3 c = normalized(c_in);
+    const Vec3 up = std::abs(c.z) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    const Vec3 e2 = normalized({up.y * c.z - up.z * c.y, up.z * c.x - up.x * c.z, up.x * c.y - up.y * c.x});
+    const Vec3 e1{e2.y * c.z - e2.z * c.y, e2.z * c.x - e2.x * c.z, e2.x * c.y - e2.y * c.x};
+    const double t = std::tan(sigma);
+    std::array<Vec3, 4> v;
+    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int i = 0; i < 4; ++i)
+        v[static_cast<std::size_t>(i)] = {c.x + t * (sx[i] * e1.x + sy[i] * e2.x), c.y + t * (sx[i] * e1.y + sy[i] * e2.y),
+                                          c.z + t * (sx[i] * e1.z + sy[i] * e2.z)};
+    return v;
+}
+
+Vec3 from_angles(double theta, double phi) {
+    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+TEST(LtcMath, DensityIntegratesToOneOverTheSphere) {
+    const LtcInverse minv{0.6, 0.3, -0.2, 0.5};
+    const GaussLegendre& gl = gauss_legendre(400);
+    double sum = 0.0;
+    for (int i = 0; i < 400; ++i) {
+        const double z = gl.x[i];
+        const double s = std::sqrt(1.0 - z * z);
+        for (int k = 0; k < 400; ++k) {
+            const double phi = (k + 0.5) * kTwoPi / 400;
+            sum += gl.w[i] * (kTwoPi / 400) * ltc_density(minv.matrix(), {s * std::cos(phi), s * std::sin(phi), z});
+        }
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-6);
+}
+
+TEST(LtcMath, PolygonClampedCosineMatchesQuadratureIncludingHorizonCrossings) {
+    const auto cosine = [](const Vec3& w) { return std::max(w.z, 0.0) / kPi; };
+    struct Case { double theta, phi, sigma; };
+    const Case cases[] = {{0.0, 0.0, 0.3}, {0.7, 1.0, 0.2}, {1.3, -2.0, 0.4},
+                          {1.5, 0.5, 0.3},   // crosses the horizon
+                          {1.7, 3.0, 0.35},  // mostly below, crosses it
+                          {1.2, 0.0, 1.0}};  // large, crosses it
+    for (const Case& c : cases) {
+        const std::array<Vec3, 4> v = square_light(from_angles(c.theta, c.phi), c.sigma);
+        // The quadrature of the clipped integrand is exact only up to its
+        // kink at the horizon: clip first, then fan-triangulate.
+        const std::vector<Vec3> clipped = clip_to_horizon(v.data(), 4);
+        double ref = 0.0;
+        for (std::size_t i = 1; i + 1 < clipped.size(); ++i)
+            ref += triangle_quadrature(clipped[0], clipped[i], clipped[i + 1], cosine);
+        EXPECT_NEAR(polygon_clamped_cosine(v.data(), 4), ref, 1e-10) << c.theta << " " << c.phi;
+        // The same polygon in reverse winding.
+        const std::array<Vec3, 4> r{v[3], v[2], v[1], v[0]};
+        EXPECT_NEAR(polygon_clamped_cosine(r.data(), 4), ref, 1e-10);
+    }
+}
+
+TEST(LtcMath, LtcPolygonIntegralMatchesQuadratureOfTheDensity) {
+    const Mat3 minv = LtcInverse{0.8, 0.25, -0.3, 0.6}.matrix();
+    for (double theta : {0.2, 0.9, 1.45}) {
+        const std::array<Vec3, 4> v = square_light(from_angles(theta, 2.5), 0.25);
+        const double ref = quad_quadrature(v, [&](const Vec3& w) { return ltc_density(minv, w); });
+        EXPECT_NEAR(ltc_polygon_integral(minv, v.data(), 4), ref, 1e-8) << theta;
+    }
+}
+
+TEST(LtcMath, SphereFormFactorMatchesQuadratureOfTheCap) {
+    for (double z : {1.0, 0.6, 0.2, 0.0, -0.15, -0.5}) {
+        for (double len : {0.02, 0.3, 0.7}) {
+            const double sigma = std::asin(std::sqrt(len));
+            const double w = std::acos(z);
+            const Vec3 c{std::sin(w), 0.0, std::cos(w)}, t1{std::cos(w), 0.0, -std::sin(w)};
+            // Polar coordinates about the cap's centre; the integrand's kink
+            // at the horizon limits Gauss-Legendre, so use many nodes.
+            const GaussLegendre& gl = gauss_legendre(600);
+            double sum = 0.0;
+            for (int i = 0; i < 600; ++i) {
+                const double b = 0.5 * sigma * (gl.x[i] + 1.0);
+                for (int k = 0; k < 600; ++k) {
+                    const double phi = (k + 0.5) * kTwoPi / 600;
+                    const double sb = std::sin(b), cb = std::cos(b);
+                    const double dz = cb * c.z + sb * std::cos(phi) * t1.z;
+                    sum += 0.5 * sigma * gl.w[i] * (kTwoPi / 600) * sb * std::max(dz, 0.0) / kPi;
+                }
+            }
+            EXPECT_NEAR(sphere_horizon_form_factor(z, len), sum / len, 2e-6) << z << " " << len;
+        }
+    }
+    EXPECT_DOUBLE_EQ(sphere_horizon_form_factor(0.4, 0.0), 0.4);
+    EXPECT_DOUBLE_EQ(sphere_horizon_form_factor(-0.4, 0.0), 0.0);
+}
+
+// Texels of the 64x64 Heitz grid spread over it, grazing rows included.
+struct Texel { int t, a; };
+std::vector<Texel> subset() {
+    return {{0, 10}, {0, 40}, {12, 3}, {20, 20}, {30, 50}, {40, 8}, {45, 30}, {52, 63},
+            {58, 15}, {61, 45}, {63, 2}, {63, 32}, {63, 60}};
+}
+double mu_of(int t) { const double u = t / 63.0; return 1.0 - u * u; }
+double alpha_of(int a) { const double r = a / 63.0; return r * r; }
+
+TEST(LtcFit, EveryFittedTexelIsALocalMinimumOfTheObjective) {
+    for (const Texel& x : subset()) {
+        const LtcFit fit = fit_ggx_ltc(mu_of(x.t), alpha_of(x.a), Visibility::height_correlated);
+        const double j0 = ltc_objective(mu_of(x.t), alpha_of(x.a), Visibility::height_correlated, fit.params);
+        EXPECT_DOUBLE_EQ(j0, fit.objective);
+        // Steps relative to the parameter's scale: theta in units of the lobe width.
+        const double width = std::min(std::exp(fit.params[1]), 1.0);
+        const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
+        for (int k = 0; k < 4; ++k)
+            for (double sgn : {-1.0, 1.0}) {
+                std::array<double, 4> p = fit.params;
+                p[static_cast<std::size_t>(k)] += sgn * steps[k];
+                const double j = ltc_objective(mu_of(x.t), alpha_of(x.a), Visibility::height_correlated, p);
+                EXPECT_GE(j, j0 * (1.0 - 1e-9)) << "t=" << x.t << " a=" << x.a << " parameter " << k;
+            }
+    }
+}
+
+TEST(LtcFit, NormAndFresnelMomentMatchGgxAlbedoAndDfg) {
+    const TableDefinition& albedo = find_table("ggx_albedo");
+    const TableDefinition& dfg = find_table("ggx_dfg");
+    const PreparedTable pa = albedo.prepare(default_settings(albedo));
+    const PreparedTable pd = dfg.prepare(default_settings(dfg));
+    for (const Texel& x : subset()) {
+        // The fit evaluates the lobe at alpha >= 1e-5 and mu >= cos(1.57).
+        const double mu = std::max(mu_of(x.t), kLtcMinMu), alpha = std::max(alpha_of(x.a), kLtcMinAlpha);
+        const LtcFit fit = fit_ggx_ltc(mu_of(x.t), alpha_of(x.a), Visibility::height_correlated);
+        const double c[2] = {mu, alpha};
+        EXPECT_NEAR(fit.n0, pa.evaluator->evaluate(c, 0).value[0], 1e-7);
+        EXPECT_NEAR(fit.n1, pd.evaluator->evaluate(c, 0).value[1], 1e-7);
+    }
+}
+
+TEST(LtcFit, CoefficientsAreSmoothAlongARowAndAColumn) {
+    // Second differences of the stored coefficients along roughness (at a
+    // grazing row) and along the view angle (at a middle column): a texel
+    // fallen into another minimum shows as a spike.
+    auto check = [](const std::vector<LtcInverse>& v, const std::string& what) {
+        for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+            const double d[4] = {v[i - 1].a - 2 * v[i].a + v[i + 1].a, v[i - 1].b - 2 * v[i].b + v[i + 1].b,
+                                 v[i - 1].c - 2 * v[i].c + v[i + 1].c, v[i - 1].d - 2 * v[i].d + v[i + 1].d};
+            for (double x : d) EXPECT_LT(std::abs(x), 0.03) << what << " at " << i;
+        }
+    };
+    std::vector<LtcInverse> row, col;
+    for (int a = 0; a < 64; a += 2) row.push_back(fit_ggx_ltc(mu_of(56), alpha_of(a), Visibility::height_correlated).minv);
+    for (int t = 0; t < 64; t += 2) col.push_back(fit_ggx_ltc(mu_of(t), alpha_of(32), Visibility::height_correlated).minv);
+    check(row, "row t=56");
+    check(col, "column a=32");
+}
+
+// The three.js copy of Heitz's ltc_1 / ltc_2 (tests/fixtures/ltc).
+std::vector<double> read_fixture(const std::string& name) {
+    std::ifstream in(std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/ltc/" + name);
+    std::vector<double> v;
+    double x;
+    while (in >> x) v.push_back(x);
+    return v;
+}
+
+TEST(LtcHeitz, SphereChannelAndAxesMatchThePublishedLtc2) {
+    const std::vector<double> t2 = read_fixture("three_ltc_2.txt");
+    ASSERT_EQ(t2.size(), 64u * 64u * 4u);
+    const TableDefinition& def = find_table("ltc_2");
+    const TableSettings s = default_settings(def);
+    double worst = 0.0;
+    for (int t = 0; t < 64; t += 3)
+        for (int a = 0; a < 64; a += 3) {
+            const double r = s.axes[0].value(a), mu = s.axes[1].value(t);
+            EXPECT_NEAR(r, a / 63.0, 1e-15);
+            EXPECT_NEAR(mu, mu_of(t), 1e-15);
+            const double sphere = sphere_horizon_form_factor(2.0 * r - 1.0, std::sqrt(1.0 - mu));
+            worst = std::max(worst, std::abs(sphere - t2[static_cast<std::size_t>(4 * (a + 64 * t) + 3)]));
+        }
+    EXPECT_LT(worst, 1e-4);  // Heitz computes it in float
+}
+
+TEST(LtcHeitz, RefitGivesLessIntegratedLightErrorThanThePublishedTable) {
+    const std::vector<double> t1 = read_fixture("three_ltc_1.txt");
+    const std::vector<double> t2 = read_fixture("three_ltc_2.txt");
+    ASSERT_EQ(t1.size(), 64u * 64u * 4u);
+    int wins = 0, n = 0;
+    double worst_ratio = 0.0;
+    for (int t = 0; t < 64; t += 9)
+        for (int a = 0; a < 64; a += 9) {
+            const double mu = mu_of(t), alpha = alpha_of(a);
+            const std::size_t k = static_cast<std::size_t>(4 * (a + 64 * t));
+            const LtcInverse heitz{t1[k], t1[k + 2], t1[k + 1], t1[k + 3]};
+            const LtcFit fit = fit_ggx_ltc(mu, alpha, Visibility::height_correlated);
+            const LtcFitOptions draft = ltc_fit_options(0);
+            const LtcTexelReport mine = ltc_texel_report(mu, alpha, Visibility::height_correlated, fit.minv.matrix(), fit.n0, draft);
+            const LtcTexelReport pub = ltc_texel_report(mu, alpha, Visibility::height_correlated, heitz.matrix(), t2[k], draft);
+            ++n;
+            if (mine.light_max <= pub.light_max) ++wins;
+            worst_ratio = std::max(worst_ratio, mine.light_max / std::max(pub.light_max, 1e-3));
+        }
+    EXPECT_GE(wins, n * 3 / 4) << wins << " of " << n;
+    EXPECT_LT(worst_ratio, 6.0);
+}
+
+TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
+    for (const char* id : {"ltc_1", "ltc_2", "hdrp_ltc_ggx"}) {
+        const TableDefinition& def = find_table(id);
+        TableSettings s = default_settings(def);
+        s.axes[0].count = 6;
+        s.axes[1].count = 5;
+        GenerateOptions o1, o2, oall;
+        o1.threads = 1;
+        o2.threads = 2;
+        oall.threads = 0;
+        const Table a = generate(def, s, o1), b = generate(def, s, o2), c = generate(def, s, oall);
+        EXPECT_EQ(a.values, b.values) << id;
+        EXPECT_EQ(a.values, c.values) << id;
+        EXPECT_EQ(a.method.dump(), c.method.dump()) << id;
+    }
+}
+
+TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
+    const TableDefinition& h = find_table("ltc_1");
+    const TableDefinition& u = find_table("hdrp_ltc_ggx");
+    TableSettings s = default_settings(h);
+    s.axes[0].count = 4;
+    s.axes[1].count = 4;
+    const Table th = generate(h, s), tu = generate(u, s);
+    for (std::size_t k = 0; k < th.texel_count(); ++k) {
+        if (k % 4 == 0) continue;  // roughness 0: HDRP fits at alpha >= 1e-3, Heitz at 1e-5
+        const double a = th.at(k, 0), c = th.at(k, 1), b = th.at(k, 2), d = th.at(k, 3);
+        EXPECT_NEAR(tu.at(k, 0), a / d, 1e-12 * std::abs(a / d) + 1e-300);
+        EXPECT_NEAR(tu.at(k, 1), c / d, 1e-12 * std::abs(c / d) + 1e-300);
+        EXPECT_NEAR(tu.at(k, 2), 1.0 / d, 1e-12 / d);
+        EXPECT_NEAR(tu.at(k, 3), b / d, 1e-12 * std::abs(b / d) + 1e-300);
+    }
+}
+
+}  // namespace
+}  // namespace brdflut
+
+namespace brdflut {
+namespace {
+TEST(LtcVerify, ClosedFormAndLocalMinimumChecksPass) {
+    for (const char* id : {"ltc_1", "ltc_2"}) {
+        const std::vector<CheckRow> rows = verify_table(find_table(id));
+        ASSERT_FALSE(rows.empty()) << id;
+        for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
+    }
+}
+}  // namespace
+}  // namespace brdflut
