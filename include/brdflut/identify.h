@@ -15,9 +15,11 @@
 //    end-point grid of its default axes and interpolated (cubic, in the
 //    default axes' normalized coordinate) at about 8 x 8 texels of the file,
 //    edges included. Axis descriptions that give the same parameters at every
-//    texel are kept once, in their simplest form.
+//    texel are kept once, in their simplest form; layouts that change more
+//    than 4 fields of the default axes (placement, warp, range, flip, clamp
+//    count 1 each, a shift 2) are not searched.
 // 2. Refinement: the best few dozen, with the clamp variants, are evaluated
-//    exactly (the table's evaluator, default quality) at up to 16 x 16 texels.
+//    exactly (the table's evaluator, default quality) at up to 12 x 12 texels.
 // 3. Final: the best `top` are generated in full and scored with
 //    compare_values, so their figures and verdicts are those of `brdflut
 //    compare` with the printed arguments.

@@ -19,16 +19,20 @@ namespace brdflut {
 namespace {
 
 constexpr int kCoarsePerAxis = 8;    // texels per axis scored in the coarse stage
-constexpr int kRefinePerAxis = 16;   // texels per axis evaluated exactly in refinement
+constexpr int kRefinePerAxis = 12;   // texels per axis evaluated exactly in refinement
 constexpr int kDense2D = 33;         // draft grid per axis of a 2-D table
 constexpr int kDense1D = 129;        // draft grid of a 1-D table
-constexpr std::size_t kKeepLinear = 32;  // coarse candidates refined, values as they are
-constexpr std::size_t kKeepSrgb = 8;     // and with the sRGB EOTF
+constexpr std::size_t kKeepLinear = 20;  // coarse candidates refined, values as they are
+constexpr std::size_t kKeepSrgb = 4;     // and with the sRGB EOTF
 constexpr std::size_t kMaxOptionCombinations = 24;
 // Clamps at the lower end of an axis whose grid reaches its domain's lower
 // end, as a fraction of the range (cos_theta >= 1e-4, >= 1e-3).
 constexpr double kEndClamps[] = {1e-4, 1e-3};
 constexpr double kShifts[] = {0.0, 1.0, -1.0, 0.5, -0.5};
+// The coarse search scores layouts that change at most this many fields of
+// the table's default axes (placement, warp, range, flip, clamp: 1 each; a
+// shift: 2), over both axes together.
+constexpr int kMaxLayoutCost = 4;
 
 std::string shortest(double v) {
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
@@ -599,7 +603,8 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
             const int s0 = order == 0 ? 0 : 1;  // storage axis of definition axis 0
             const auto& c0s = candidates(variants[v], 0, counts[s0]);
             if (ndim == 2) candidates(variants[v], 1, counts[1 - s0]);
-            for (std::size_t c = 0; c < c0s.size(); ++c) tasks.push_back({v, order, c});
+            for (std::size_t c = 0; c < c0s.size(); ++c)
+                if (c0s[c].cost <= kMaxLayoutCost) tasks.push_back({v, order, c});
         }
     }
     // File values at the coarse subset, per order: point (s, t) with s the
@@ -650,6 +655,7 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
         const std::vector<double>& G = file_srgb[task.order];
         for (std::size_t ci = 0; ci < c1s.size(); ++ci) {
             const AxisCandidate& c1 = c1s[ci];
+            if (c0.cost + c1.cost > kMaxLayoutCost) break;  // candidates are sorted by cost
             const std::size_t k1 = c1.idx.size();
             const std::size_t points = k0 * k1;
             vals.assign(points * static_cast<std::size_t>(nc), 0.0);
@@ -727,7 +733,13 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
     for (const Task& t : tasks) {
         const Variant& v = variants[t.variant];
         const int s0 = t.order == 0 ? 0 : 1;
-        report.coarse_candidates += ndim == 2 ? cand_cache.at(std::make_tuple(v.def, 1, counts[1 - s0])).size() : 1;
+        const int c0 = cand_cache.at(std::make_tuple(v.def, 0, counts[s0]))[t.c0].cost;
+        if (ndim == 1) {
+            ++report.coarse_candidates;
+            continue;
+        }
+        for (const AxisCandidate& c1 : cand_cache.at(std::make_tuple(v.def, 1, counts[1 - s0])))
+            if (c0 + c1.cost <= kMaxLayoutCost) ++report.coarse_candidates;
     }
     report.coarse_candidates *= 2;  // values as they are, and through the sRGB EOTF
     keep_best(lin, kKeepLinear);
