@@ -232,3 +232,27 @@ TEST(Identify, PrintedCompareCommandsPassOrFailAsIdentifySays) {
     EXPECT_EQ(run_cli("identify '" + (dir / "ggx_dfg.exr") + "' --top 0", dir).exit_code, 2);
     EXPECT_EQ(run_cli("identify '" + (dir / "missing.exr") + "'", dir).exit_code, 1);
 }
+
+TEST(Identify, CyclesGgxEFromBlendersSourceIsItsPresetWithTheViewCosineClamped) {
+    // tests/fixtures/cycles: table_ggx_E as Blender ships it (6 printed digits).
+    TempDir dir;
+    const std::string file = std::string("'") + BRDFLUT_SOURCE_DIR + "/tests/fixtures/cycles/shader.tables'";
+    auto id = run_cli("identify " + file + " --array table_ggx_E --shape 32x32 --top 2 --json", dir);
+    ASSERT_EQ(id.exit_code, 0) << id.err;
+    const auto j = nlohmann::json::parse(id.out);
+    const auto& best = j.at("explanations").at(0);
+    EXPECT_EQ(best.at("table"), "cycles_ggx_e");
+    EXPECT_LT(best.at("max_error").get<double>(), 1.5e-6);
+    EXPECT_NE(best.at("findings").dump().find("cos_theta clamped to [0.0001"), std::string::npos) << best.dump(2);
+    const std::string cmd = best.at("compare").get<std::string>();
+    EXPECT_NE(cmd.find("--array table_ggx_E --shape 32x32 --as cycles_ggx_e --clamp cos_theta=0.0001:inf"),
+              std::string::npos)
+        << cmd;
+    // Its 6-digit values fail one float step, as identify says, and pass at
+    // the precision they were printed with; unclamped, grazing rows are 2% off.
+    EXPECT_FALSE(best.at("pass").get<bool>());
+    EXPECT_EQ(run_cli(cmd.substr(8), dir).exit_code, 1);
+    EXPECT_EQ(run_cli(cmd.substr(8) + " --tolerance 1.5e-6", dir).exit_code, 0);
+    auto unclamped = run_cli("compare " + file + " --array table_ggx_E --shape 32x32 --as cycles_ggx_e --tolerance 1e-2", dir);
+    EXPECT_EQ(unclamped.exit_code, 1) << unclamped.out;
+}

@@ -61,6 +61,7 @@ int run_compare(const CompareArgs& a);
 
 struct IdentifyArgs {
     std::string file;
+    ReadArgs read;  // as compare reads the file
     int top = 3;
     bool json = false;
     int threads = 0;

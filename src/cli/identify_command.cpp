@@ -53,9 +53,13 @@ int run_identify(const IdentifyArgs& a) {
     opt.threads = a.threads;
     if (opt.top < 1 || opt.top > 50) throw Error("--top " + std::to_string(a.top) + " is out of range; allowed: 1 to 50");
     if (opt.threads < 0) throw Error("--threads " + std::to_string(a.threads) + " is out of range; allowed: 0 (all) or more");
-    const ExrImage img = read_table_image(a.file);
+    const ExrImage img = read_table_image(a.file, read_options(a.read));
     const IdentifyReport rep = identify(img, opt);
-    const std::string file = shell_word(a.file);
+    // The file and how it was read, as compare must read it.
+    std::string file = shell_word(a.file);
+    if (!a.read.array.empty()) file += " --array " + shell_word(a.read.array);
+    if (!a.read.shape.empty()) file += " --shape " + shell_word(a.read.shape);
+    if (!a.read.decode.empty()) file += " --decode " + shell_word(a.read.decode);
     if (a.json) {
         nlohmann::json j;
         j["file"] = a.file;

@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
 
     CLI::App* idf = app.add_subcommand("identify", "Find which table and layout a LUT of unknown convention holds");
     IdentifyArgs id;
-    idf->add_option("file", id.file, "The LUT file (OpenEXR, or a png16, dds or ktx2 file)")->required();
+    idf->add_option("file", id.file, kFileHelp)->required();
+    add_read_options(*idf, id.read);
     idf->add_option("--top", id.top, "How many explanations to print")->capture_default_str();
     idf->add_flag("--json", id.json, "Print the explanations as JSON");
     idf->add_option("--threads", id.threads, "Worker threads; 0 uses every core");
