@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "brdflut/catalogue.h"
@@ -16,9 +17,26 @@ namespace brdflut {
 // and the settings whose generated table has the file's layout (axes in
 // storage order with their placement, warp, flip and clamps, and the
 // channel map).
+// What the file's values are of the table's: the values themselves, or
+// (srgb) the exact sRGB EOTF of each, as a linear table reads when it is
+// decoded or sampled as sRGB (channels R, G, B; A stays linear).
+enum class ValueTransform { none, srgb };
+std::string_view to_string(ValueTransform t);             // "none", "srgb"
+ValueTransform value_transform_from_string(std::string_view s);  // throws brdflut::Error
+
+// The exact sRGB EOTF (IEC 61966-2-1) and its inverse, for v in [0, 1]
+// (extended as odd functions beyond).
+double srgb_eotf(double encoded);
+double srgb_inverse_eotf(double linear);
+
+// Applies t to a table's values in place; the error estimates are scaled by
+// the slope of the EOTF.
+void apply_value_transform(Table& t, ValueTransform transform);
+
 struct LutDescription {
     const TableDefinition* def = nullptr;
     TableSettings settings;
+    ValueTransform values = ValueTransform::none;
 };
 
 // Understands a brdflut file from its metadata. Throws RuntimeError when the

@@ -8,6 +8,41 @@
 
 namespace brdflut {
 
+std::string_view to_string(ValueTransform t) { return t == ValueTransform::srgb ? "srgb" : "none"; }
+
+ValueTransform value_transform_from_string(std::string_view s) {
+    if (s == "none") return ValueTransform::none;
+    if (s == "srgb") return ValueTransform::srgb;
+    throw Error("--transform '" + std::string(s) + "' is not known; allowed: none, srgb");
+}
+
+double srgb_eotf(double e) {
+    const double a = std::abs(e);
+    const double v = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    return std::copysign(v, e);
+}
+
+double srgb_inverse_eotf(double l) {
+    const double a = std::abs(l);
+    const double v = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
+    return std::copysign(v, l);
+}
+
+void apply_value_transform(Table& t, ValueTransform transform) {
+    if (transform == ValueTransform::none) return;
+    const std::size_t nc = t.channels.size();
+    for (std::size_t k = 0; k < t.values.size(); ++k) {
+        if (k % nc == 3) continue;  // alpha is linear
+        const double v = t.values[k];
+        const double e = t.errors[k];
+        const double out = srgb_eotf(v);
+        // The slope of the EOTF over [v - e, v + e] bounds the new error.
+        const double slope = std::max(std::abs(srgb_eotf(v + e) - out), std::abs(out - srgb_eotf(v - e)));
+        t.values[k] = out;
+        t.errors[k] = slope;
+    }
+}
+
 LutDescription describe_from_metadata(const ExrImage& img, const std::string& path) {
     if (!img.has_metadata)
         throw RuntimeError("'" + path + "' has no brdflut metadata; describe it with --as <table id> "
@@ -180,7 +215,8 @@ CompareReport compare_lut(const ExrImage& img, const LutDescription& d, int thre
                           const Tolerance& tolerance) {
     GenerateOptions opt;
     opt.threads = threads;
-    const Table exact = generate(*d.def, d.settings, opt);
+    Table exact = generate(*d.def, d.settings, opt);
+    apply_value_transform(exact, d.values);
     return compare_values(img, exact, worst_count, tolerance);
 }
 

@@ -139,7 +139,8 @@ int run_compare(const CompareArgs& a) {
     if (a.worst < 0 || a.worst > 100000)
         throw Error("--worst " + std::to_string(a.worst) + " is out of range; allowed: 0 to 100000");
     const Tolerance given = a.tolerance.empty() ? Tolerance{} : parse_tolerance(a.tolerance);
-    const Described d = describe(a.describe);
+    Described d = describe(a.describe);
+    if (!a.transform.empty()) d.lut.values = value_transform_from_string(a.transform);
     const Tolerance tol = a.tolerance.empty() ? default_tolerance(d.image) : given;
     const CompareReport rep = compare_lut(d.image, d.lut, a.threads, static_cast<std::size_t>(a.worst), tol);
     const auto& axes = d.lut.settings.axes;
@@ -163,6 +164,7 @@ int run_compare(const CompareArgs& a) {
         j["file"] = a.describe.file;
         j["table"] = d.lut.def->id;
         j["described_by"] = d.from_metadata ? "metadata" : "command line";
+        j["transform"] = std::string(to_string(d.lut.values));
         nlohmann::json ch = nlohmann::json::array();
         for (const auto& c : rep.channels) ch.push_back({{"channel", c.channel}, {"max_abs_error", c.max_abs}, {"rms_error", c.rms}});
         j["channels"] = ch;
@@ -190,6 +192,7 @@ int run_compare(const CompareArgs& a) {
     }
     std::printf("file:  %s\ntable: %s (described by %s)\n", a.describe.file.c_str(), d.lut.def->id.c_str(),
                 d.from_metadata ? "its metadata" : "the command line");
+    if (d.lut.values == ValueTransform::srgb) std::printf("values: the sRGB EOTF of the table's values\n");
     for (const Axis& ax : axes) std::printf("axis:  %s\n", axis_line(ax).c_str());
     std::printf("\n%-8s %-14s %-14s\n", "channel", "max |error|", "rms error");
     for (const auto& c : rep.channels) std::printf("%-8s %-14s %-14s\n", c.channel.c_str(), sci(c.max_abs).c_str(), sci(c.rms).c_str());

@@ -56,8 +56,18 @@ struct CompareArgs {
     int threads = 0;
     std::string plot;
     std::string tolerance;  // --tolerance X or X%; empty: the file's own default
+    std::string transform;  // --transform none|srgb
 };
 int run_compare(const CompareArgs& a);
+
+struct IdentifyArgs {
+    std::string file;
+    ReadArgs read;  // as compare reads the file
+    int top = 3;
+    bool json = false;
+    int threads = 0;
+};
+int run_identify(const IdentifyArgs& a);
 
 int run_inspect(const std::string& file, const ReadArgs& read, bool json);
 

@@ -132,6 +132,17 @@ int main(int argc, char** argv) {
     cmp->add_option("--tolerance", c.tolerance,
                     "Largest allowed |stored - exact|: X (absolute) or X% (of the exact value); default: the "
                     "file's error_bound, or one storage step of a foreign file's pixel type. Exit 1 when exceeded");
+    cmp->add_option("--transform", c.transform,
+                    "What the file holds of the table's values: none (default) or srgb (their sRGB EOTF, as a "
+                    "linear table decoded or sampled as sRGB reads)");
+
+    CLI::App* idf = app.add_subcommand("identify", "Find which table and layout a LUT of unknown convention holds");
+    IdentifyArgs id;
+    idf->add_option("file", id.file, kFileHelp)->required();
+    add_read_options(*idf, id.read);
+    idf->add_option("--top", id.top, "How many explanations to print")->capture_default_str();
+    idf->add_flag("--json", id.json, "Print the explanations as JSON");
+    idf->add_option("--threads", id.threads, "Worker threads; 0 uses every core");
 
     CLI::App* ins = app.add_subcommand("inspect", "Show a LUT file's metadata and channel statistics");
     std::string inspect_file;
@@ -146,7 +157,7 @@ int main(int argc, char** argv) {
     add_describe_options(*smp, s.describe);
     smp->add_option("--at", s.at, "Parameter point, e.g. cos_theta=0.5,alpha=0.1")->required();
 
-    const std::vector<std::string> commands{"list", "generate", "verify", "furnace", "compare", "inspect", "sample"};
+    const std::vector<std::string> commands{"list", "generate", "verify", "furnace", "compare", "identify", "inspect", "sample"};
     if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
         std::string known;
         for (const auto& name : commands) known += (known.empty() ? "" : ", ") + name;
@@ -180,6 +191,7 @@ int main(int argc, char** argv) {
             collect_params(*cmp, c.describe.table);
             return run_compare(c);
         }
+        if (app.got_subcommand(idf)) return run_identify(id);
         if (app.got_subcommand(ins)) return run_inspect(inspect_file, inspect_read, inspect_json);
         if (app.got_subcommand(smp)) {
             collect_params(*smp, s.describe.table);
