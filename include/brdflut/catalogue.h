@@ -70,6 +70,11 @@ struct TableDefinition {
     // The engine preset the table belongs to (`generate --preset NAME`); empty
     // for the default set that `generate --all` writes.
     std::string preset;
+    // Whether `identify` searches this table. Tables fitted per texel (the
+    // LTC fits, milliseconds a texel) are left out: tabulating them for the
+    // coarse search would cost more than the rest of the catalogue together.
+    // `compare --as` still checks a file against them.
+    bool searched_by_identify = true;
     // How the generated shader lookup function (brdflut/shader.h) returns
     // the texel: empty = one struct member per channel; otherwise the name of
     // a result form of the shader writer (src/io/shader_writer.cpp,

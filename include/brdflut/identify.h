@@ -2,7 +2,8 @@
 // and in which layout (`brdflut identify`).
 //
 // The search runs over every catalogue table with the file's number of axes
-// (presets included), each option with a fixed list of values (GGX
+// (presets included; not the per-texel fits, see
+// TableDefinition::searched_by_identify), each option with a fixed list of values (GGX
 // `visibility`), and the axis vocabulary of axis.h: storage order, per axis
 // placement, every registered warp valid on the table's default range, that
 // range forward and reversed, flip, shifts of +-0.5 and +-1 texel (clamped to

@@ -536,7 +536,7 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
     // tabulated at draft quality on dense end-point grids.
     std::vector<Variant> variants;
     for (const TableDefinition& def : catalogue()) {
-        if (static_cast<int>(def.axes.size()) != ndim) continue;
+        if (static_cast<int>(def.axes.size()) != ndim || !def.searched_by_identify) continue;
         for (const auto& params : option_combinations(def)) {
             Variant v;
             v.def = &def;

@@ -133,6 +133,7 @@ TableDefinition make(const Entry& e) {
     d.channels = e.channels;
     d.options = {visibility_option()};
     d.preset = e.preset;
+    d.searched_by_identify = false;  // a fit per texel: see catalogue.h
     const Layout layout = e.layout;
     const std::string layout_text = e.layout_text;
     const std::string preset = e.preset;
