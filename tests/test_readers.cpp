@@ -739,3 +739,17 @@ TEST(CliReaders, InspectCompareAndSampleTakeArrayShapeAndDecode) {
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_TRUE(contains(r.err, "--shape '32x'")) << r.err;
 }
+
+TEST(Texture3d, ADdsCutShortBeforeItsFourCcIsRefusedAsTruncated) {
+    // Found by the fuzzer: 82 bytes, the DX10 FourCC at 84 out of reach.
+    const std::string bytes = read_file(std::string(BRDFLUT_SOURCE_DIR) + "/tests/fuzz/corpus/dds_cut_before_fourcc.dds");
+    ASSERT_GT(bytes.size(), 80u);
+    // The corpus file starts with the fuzzer's option byte.
+    const std::string dds = bytes.substr(1);
+    try {
+        read_table_image_memory(dds.data(), dds.size(), "cut.dds");
+        ADD_FAILURE() << "a truncated DDS file was read";
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+    }
+}

@@ -85,7 +85,10 @@ void parse_metadata(const Bytes& f, ExrImage& img, std::string_view json) {
 
 ExrImage read_dds(const Bytes& f) {
     // DDS_HEADER at 4, DDS_PIXELFORMAT at 76, DDS_HEADER_DXT10 at 128.
-    if (f.u32(4) != 124 || f.u32(76) != 32 || f.b.substr(84, 4) != "DX10") f.fail("not a DDS file with a DX10 header");
+    // The FourCC "DX10" read as a little-endian word, so a file cut short
+    // before it is reported as truncated.
+    constexpr std::uint32_t kFourCcDx10 = 0x30315844;
+    if (f.u32(4) != 124 || f.u32(76) != 32 || f.u32(84) != kFourCcDx10) f.fail("not a DDS file with a DX10 header");
     constexpr std::uint32_t DDSD_DEPTH = 0x800000;
     constexpr std::uint32_t kTexture2D = 3, kTexture3D = 4;  // D3D10_RESOURCE_DIMENSION
     ExrImage img;
