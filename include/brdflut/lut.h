@@ -10,6 +10,7 @@
 
 #include "brdflut/catalogue.h"
 #include "brdflut/exr.h"
+#include "brdflut/math.h"
 
 namespace brdflut {
 
@@ -24,10 +25,6 @@ enum class ValueTransform { none, srgb };
 std::string_view to_string(ValueTransform t);             // "none", "srgb"
 ValueTransform value_transform_from_string(std::string_view s);  // throws brdflut::Error
 
-// The exact sRGB EOTF (IEC 61966-2-1) and its inverse, for v in [0, 1]
-// (extended as odd functions beyond).
-double srgb_eotf(double encoded);
-double srgb_inverse_eotf(double linear);
 
 // Applies t to a table's values in place; the error estimates are scaled by
 // the slope of the EOTF.

@@ -34,4 +34,18 @@ constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.
 // used for the outgoing direction of every isotropic table.
 inline Vec3 direction_from_mu(double mu) { return {safe_sqrt(1.0 - mu * mu), 0.0, mu}; }
 
+// The exact sRGB EOTF (IEC 61966-2-1), the decoding a GPU applies to an
+// *_SRGB texture, and its inverse, for v in [0, 1] (extended as odd
+// functions beyond).
+inline double srgb_eotf(double encoded) {
+    const double a = std::abs(encoded);
+    const double v = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
+    return std::copysign(v, encoded);
+}
+inline double srgb_inverse_eotf(double linear) {
+    const double a = std::abs(linear);
+    const double v = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
+    return std::copysign(v, linear);
+}
+
 }  // namespace brdflut

@@ -16,18 +16,6 @@ ValueTransform value_transform_from_string(std::string_view s) {
     throw Error("--transform '" + std::string(s) + "' is not known; allowed: none, srgb");
 }
 
-double srgb_eotf(double e) {
-    const double a = std::abs(e);
-    const double v = a <= 0.04045 ? a / 12.92 : std::pow((a + 0.055) / 1.055, 2.4);
-    return std::copysign(v, e);
-}
-
-double srgb_inverse_eotf(double l) {
-    const double a = std::abs(l);
-    const double v = a <= 0.0031308 ? 12.92 * a : 1.055 * std::pow(a, 1.0 / 2.4) - 0.055;
-    return std::copysign(v, l);
-}
-
 void apply_value_transform(Table& t, ValueTransform transform) {
     if (transform == ValueTransform::none) return;
     const std::size_t nc = t.channels.size();

@@ -18,12 +18,6 @@
 namespace brdflut::cli {
 namespace {
 
-std::string sci(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2e", v);
-    return buf;
-}
-
 std::string axis_line(const Axis& a) {
     std::ostringstream s;
     s << a.name << " [" << a.min << ", " << a.max << "] " << a.count << " " << to_string(a.placement) << " "

@@ -11,12 +11,6 @@
 namespace brdflut::cli {
 namespace {
 
-std::string sci(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2e", v);
-    return buf;
-}
-
 // The file name as one shell word.
 std::string shell_word(const std::string& s) {
     bool plain = !s.empty();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "brdflut/error.h"
@@ -74,6 +75,12 @@ std::vector<int> parse_size(const std::string& s) {
     }
     if (out.size() > 3) throw Error("--size '" + s + "' has more than 3 counts; allowed: N, NxM or NxMxK");
     return out;
+}
+
+std::string sci(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2e", v);
+    return buf;
 }
 
 double parse_limit(const std::string& option, const std::string& s) {

@@ -57,6 +57,8 @@ void check_all_used(const TableArgs& a, const std::set<std::string>& used);
 // "N", "NxM" or "NxMxK".
 std::vector<int> parse_size(const std::string& s);
 double parse_double(const std::string& option, const std::string& s);
+// A number as printed in reports: "%.2e".
+std::string sci(double v);
 // As parse_double, also accepting "inf" and "-inf" (range and clamp limits).
 double parse_limit(const std::string& option, const std::string& s);
 std::pair<std::string, std::string> split_assignment(const std::string& option, const std::string& s);

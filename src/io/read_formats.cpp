@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "brdflut/error.h"
+#include "brdflut/math.h"
 #include "brdflut/formats.h"
 #include "io/image_limits.h"
 #include "io/input_file.h"
@@ -254,10 +255,6 @@ ExrImage read_png(const Bytes& f, const ReadOptions& opt) {
     return img;
 }
 
-// The sRGB EOTF (IEC 61966-2-1), exact: the decoding a GPU applies to an
-// *_SRGB texture.
-double srgb_to_linear(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
-
 void apply_decode(const std::string& name, ExrImage& img, Decode decode) {
     if (decode != Decode::srgb) return;
     if (!img.unorm8 && !img.unorm16)
@@ -266,7 +263,7 @@ void apply_decode(const std::string& name, ExrImage& img, Decode decode) {
                            "file holds floating-point samples");
     const std::size_t nc = img.channel_names.size();
     for (std::size_t i = 0; i < img.pixels.size(); ++i)
-        if (i % nc < 3) img.pixels[i] = srgb_to_linear(img.pixels[i]);  // a 4th channel is alpha, stored linear
+        if (i % nc < 3) img.pixels[i] = srgb_eotf(img.pixels[i]);  // a 4th channel is alpha, stored linear
 }
 
 enum class Kind { exr, dds, ktx2, png, npy, unknown };
