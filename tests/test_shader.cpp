@@ -2,10 +2,13 @@
 // writes. tests/gpu/ runs the functions on lavapipe.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
+#include "brdflut/catalogue.h"
 #include "brdflut/error.h"
+#include "brdflut/ltc.h"
 #include "brdflut/shader.h"
 #include "test_support.h"
 
@@ -66,6 +69,109 @@ TEST(ShaderWriter, TransposedTableKeepsTheSignatureAndReadsItsFirstStoredAxisAsX
     EXPECT_NE(y, std::string::npos) << text;
     EXPECT_NE(text.find("x = 1.0 - x;"), std::string::npos) << "alpha is stored flipped";
     EXPECT_EQ(text.find("y = 1.0 - y;"), std::string::npos);
+}
+
+// The LTC matrix tables return M^-1 built from the filtered texel in their
+// documented packing. Heitz's ltc_1 as three.js and EEVEE unpack it:
+// mat3(vec3(R, 0, G), vec3(0, 1, 0), vec3(B, 0, A)), GLSL's columns; HLSL's
+// float3x3 constructor takes rows, so the same matrix reads transposed.
+// HDRP's channels are invM._m00_m02_m11_m20 of the transpose (invM._m22 =
+// 1): by rows M^-1 = [[R, 0, A], [0, B, 0], [G, 0, 1]].
+TEST(ShaderWriter, LtcMatrixTablesBuildTheInverseMatrixFromTheirDocumentedPacking) {
+    TempDir dir;
+    const auto r = test::run_cli("generate ltc_1 ltc_2 ltc_ggx_error hdrp_ltc_ggx --size 4x4 --quality draft "
+                                 "--shader glsl --shader hlsl -q -o '" + dir / "out" + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string heitz_glsl = test::read_file(dir / "out/ltc_1.glsl");
+    EXPECT_NE(heitz_glsl.find("    mat3 inverse_matrix;\n"), std::string::npos) << heitz_glsl;
+    EXPECT_NE(heitz_glsl.find("result.inverse_matrix = mat3(vec3(texel.r, 0.0, texel.g), vec3(0.0, 1.0, 0.0), "
+                              "vec3(texel.b, 0.0, texel.a));"),
+              std::string::npos) << heitz_glsl;
+    EXPECT_NE(heitz_glsl.find("inverse_matrix * v"), std::string::npos);
+    EXPECT_NE(heitz_glsl.find("constructor takes columns"), std::string::npos);
+    const std::string heitz_hlsl = test::read_file(dir / "out/ltc_1.hlsl");
+    EXPECT_NE(heitz_hlsl.find("    float3x3 inverse_matrix;\n"), std::string::npos) << heitz_hlsl;
+    EXPECT_NE(heitz_hlsl.find("result.inverse_matrix = float3x3(float3(texel.r, 0.0, texel.b), float3(0.0, 1.0, 0.0), "
+                              "float3(texel.g, 0.0, texel.a));"),
+              std::string::npos) << heitz_hlsl;
+    EXPECT_NE(heitz_hlsl.find("mul(inverse_matrix, v)"), std::string::npos);
+    EXPECT_NE(heitz_hlsl.find("constructor takes rows"), std::string::npos);
+    const std::string hdrp_glsl = test::read_file(dir / "out/hdrp_ltc_ggx.glsl");
+    EXPECT_NE(hdrp_glsl.find("result.inverse_matrix = mat3(vec3(texel.r, 0.0, texel.g), vec3(0.0, texel.b, 0.0), "
+                             "vec3(texel.a, 0.0, 1.0));"),
+              std::string::npos) << hdrp_glsl;
+    const std::string hdrp_hlsl = test::read_file(dir / "out/hdrp_ltc_ggx.hlsl");
+    EXPECT_NE(hdrp_hlsl.find("result.inverse_matrix = float3x3(float3(texel.r, 0.0, texel.a), "
+                             "float3(0.0, texel.b, 0.0), float3(texel.g, 0.0, 1.0));"),
+              std::string::npos) << hdrp_hlsl;
+    // The norms and the error report keep their channels by name alone.
+    for (const char* id : {"ltc_2", "ltc_ggx_error"})
+        for (const char* ext : {"glsl", "hlsl"}) {
+            const std::string text = test::read_file(dir / ("out/" + std::string(id) + "." + ext));
+            ASSERT_FALSE(text.empty()) << id << "." << ext;
+            EXPECT_EQ(text.find("inverse_matrix"), std::string::npos) << id << "." << ext;
+            EXPECT_NE(text.find(" = texel.a;"), std::string::npos) << text;
+        }
+}
+
+// A file storing sums of channels (a channel map) does not hold the matrix's
+// elements: the function returns the channels and says why there is no matrix.
+TEST(ShaderWriter, LtcMatrixTableWithAChannelMapReturnsItsChannelsOnly) {
+    TempDir dir;
+    const auto r = test::run_cli("generate ltc_1 --size 4x4 --quality draft --channels R=R+G,G=B "
+                                 "--shader glsl -q -o '" + dir / "out" + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string text = test::read_file(dir / "out/ltc_1.glsl");
+    EXPECT_EQ(text.find("mat3 inverse_matrix;"), std::string::npos) << text;
+    EXPECT_NE(text.find("no inverse_matrix"), std::string::npos) << text;
+    EXPECT_NE(text.find(" = texel.g;"), std::string::npos) << text;
+    Table t;
+    t.id = "ltc_1";
+    Axis a;
+    a.count = 4;
+    t.axes = {a, a};
+    t.channels = {"", ""};
+    t.channel_map = {{0, 1}, {2}};
+    EXPECT_EQ(shader_interface(t).matrix, "");
+    t.channel_map.clear();
+    t.channels.assign(4, "");
+    EXPECT_EQ(shader_interface(t).matrix, "inverse_matrix");
+}
+
+// The catalogue's packing of each LTC matrix table (shader_matrix) unpacks
+// what its evaluator stores to the fitted M^-1, up to the scale the tables
+// divide by (the LTC does not change when M^-1 is scaled).
+TEST(ShaderWriter, LtcShaderMatrixUnpacksTheFittedInverseTheEvaluatorStores) {
+    int tables = 0;
+    for (const TableDefinition& def : catalogue()) {
+        if (def.shader_result != "ltc_inverse") continue;
+        SCOPED_TRACE(def.id);
+        ++tables;
+        TableSettings s = default_settings(def);
+        s.quality = Quality::draft;
+        const PreparedTable p = def.prepare(s);
+        for (const double r : {0.35, 0.8})
+            for (const double mu : {0.25, 0.9}) {
+                const double coords[2] = {r, mu};  // (roughness, cos_theta), the definition's order
+                const TexelValue v = p.evaluator->evaluate(coords, 0);
+                Mat3 m;
+                for (int e = 0; e < 9; ++e) {
+                    const std::string& el = def.shader_matrix[static_cast<std::size_t>(e)];
+                    const std::size_t letter = std::string("RGBA").find(el);
+                    m.m[static_cast<std::size_t>(e / 3)][static_cast<std::size_t>(e % 3)] =
+                        el.size() == 1 && letter != std::string::npos ? v.value[letter] : std::stod(el);
+                }
+                const Mat3 fit = fit_ggx_ltc(mu, alpha_from_perceptual(r), Visibility::height_correlated,
+                                             ltc_fit_options(0)).minv.matrix();
+                ASSERT_GT(std::abs(m.m[1][1]), 0.0);
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j)
+                        EXPECT_NEAR(m.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] / m.m[1][1],
+                                    fit.m[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)], 1e-12)
+                            << "M^-1[" << i << "][" << j << "] at roughness " << r << ", cos_theta " << mu;
+            }
+    }
+    EXPECT_EQ(tables, 2) << "ltc_1 and hdrp_ltc_ggx";
 }
 
 }  // namespace

@@ -78,8 +78,13 @@ struct TableDefinition {
     // How the generated shader lookup function (brdflut/shader.h) returns
     // the texel: empty = one struct member per channel; otherwise the name of
     // a result form of the shader writer (src/io/shader_writer.cpp,
-    // result_forms()), e.g. an LTC table's inverse matrix.
+    // result_forms()), e.g. "ltc_inverse", an LTC table's inverse matrix.
     std::string shader_result;
+    // For shader_result "ltc_inverse": where the stored channels go in the
+    // matrix, by rows (m[row][col] of the matrix acting on column vectors,
+    // as ltc.h writes matrices): each element "R", "G", "B" or "A" (that
+    // channel of the filtered texel) or a number (a constant element).
+    std::array<std::string, 9> shader_matrix;
     // Validates settings (throws brdflut::Error) and builds the evaluator.
     std::function<PreparedTable(const TableSettings&)> prepare;
 };

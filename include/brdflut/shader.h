@@ -2,7 +2,7 @@
 // that takes the physical parameters and the texture, maps them to texture
 // coordinates exactly as `brdflut sample` does (the axis' position_of_value:
 // README, "Texture coordinates"), samples with the hardware's linear filter
-// and returns the channels by name.
+// and returns the channels by name (an LTC matrix table also its inverse matrix).
 #pragma once
 
 #include <cstdint>
@@ -26,6 +26,11 @@ struct ShaderInterface {
     std::vector<std::string> parameters;  // physical parameters, in the order the function takes them
     std::vector<std::string> fields;      // struct members, one per file channel, in channel order
     int dimensions = 2;                   // texture: 2 (sampler2D / Texture2D) or 3 (sampler3D / Texture3D)
+    // The member holding an LTC table's inverse matrix M^-1 (GLSL mat3, HLSL
+    // float3x3), "inverse_matrix", acting on column vectors in ltc.h's frame:
+    // inverse_matrix * v (GLSL), mul(inverse_matrix, v) (HLSL); empty for
+    // other tables and for a file storing a channel map.
+    std::string matrix;
 };
 ShaderInterface shader_interface(const Table& table);
 

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
@@ -169,36 +170,134 @@ std::string format_name(Storage s, int channels) {
     return "";
 }
 
-// How a function returns the filtered texel beyond the channels by name.
-// Each entry adds struct members and the code filling them from `texel`
-// (the filtered vec4 / float4) after the channels are set.
-//
-// Hook for LTC tables: an entry "ltc_inverse" gives the inverse matrix in
-// the form the evaluation needs (GLSL mat3, HLSL float3x3), built from the
-// channels in the table's documented packing, with a comment naming it
-// (Heitz et al. 2016: M^-1 = [[m00, 0, m02], [0, m11, 0], [m20, 0, 1]],
-// column- versus row-major stated for each language), and the table sets
-// TableDefinition::shader_result = "ltc_inverse".
-struct ResultForm {
-    std::string name;
-    std::string (*members)(ShaderLanguage);  // extra struct members, one per line
-    std::string (*code)(ShaderLanguage);     // extra statements setting them
+// Whether file channel c holds table channel c for every c (no channel map,
+// or one that maps each channel to itself).
+bool own_channels(const Table& t) {
+    for (std::size_t c = 0; c < t.channel_map.size(); ++c)
+        if (t.channel_map[c] != std::vector<int>{static_cast<int>(c)}) return false;
+    return true;
+}
+
+// What a result form is given: the table, its catalogue definition (null for
+// a table not in the catalogue) and the language.
+struct FormContext {
+    const Table& table;
+    const TableDefinition* def;
+    ShaderLanguage lang;
 };
 
-std::string none(ShaderLanguage) { return ""; }
+// How a function returns the filtered texel beyond the channels by name.
+// Each entry adds struct members and the code filling them from `texel`
+// (the filtered vec4 / float4) after the channels are set; a table names
+// its entry in TableDefinition::shader_result.
+struct ResultForm {
+    std::string name;
+    std::string member;                          // the member it adds (ShaderInterface::matrix), or ""
+    std::string (*members)(const FormContext&);  // extra struct members, one per line
+    std::string (*code)(const FormContext&);     // extra statements setting them
+};
+
+std::string none(const FormContext&) { return ""; }
+
+// ---- ltc_inverse: the LTC's inverse matrix (Heitz et al. 2016) ----
+//
+// The matrix is M^-1 of ltc.h: in the shading frame (normal +z, view
+// (sin theta, 0, cos theta)) it takes a light vertex v, a column vector, to
+// the clamped cosine's frame. The same matrix in both languages, used as
+// inverse_matrix * v (GLSL) and mul(inverse_matrix, v) (HLSL). Its elements
+// come from TableDefinition::shader_matrix (by rows): the packing of the
+// table, e.g. ltc_1 [[R, 0, B], [0, 1, 0], [G, 0, A]] (Heitz's (m00, m02,
+// m20, m22) in glm's m[col][row]), hdrp_ltc_ggx [[R, 0, A], [0, B, 0],
+// [G, 0, 1]] (HDRP's _m00_m02_m11_m20 of the transpose).
+const char* kLtcMember = "inverse_matrix";
+
+bool ltc_matrix_applies(const FormContext& f) { return f.def && own_channels(f.table); }
+
+// The expression of one element of shader_matrix: a channel of `texel` or a
+// float literal.
+std::string matrix_element(const FormContext& f, const std::string& e) {
+    static const char* kLetters = "RGBA";
+    static const char* kComponent[4] = {"r", "g", "b", "a"};
+    for (int c = 0; c < 4; ++c)
+        if (e.size() == 1 && e[0] == kLetters[c]) {
+            if (c >= f.table.channel_count())
+                throw Error("table '" + f.table.id + "': matrix element '" + e + "' names a channel the table's " +
+                            std::to_string(f.table.channel_count()) + " channels do not have");
+            return std::string("texel.") + kComponent[c];
+        }
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(e.data(), e.data() + e.size(), v);
+    if (e.empty() || ec != std::errc() || end != e.data() + e.size() || !std::isfinite(v))
+        throw Error("table '" + f.table.id + "': matrix element '" + e +
+                    "' is neither a channel (R, G, B, A) nor a finite number");
+    return literal(v);
+}
+
+std::string ltc_members(const FormContext& f) {
+    if (!f.def) return "";
+    if (!ltc_matrix_applies(f))
+        return "    // (no " + std::string(kLtcMember) + ": the file stores sums of the table's channels, a channel\n"
+               "    // map, so the matrix's elements are not the stored channels)\n";
+    const bool glsl = f.lang == ShaderLanguage::glsl;
+    std::string rows;
+    for (int r = 0; r < 3; ++r) {
+        rows += r ? ", [" : "[";
+        for (int c = 0; c < 3; ++c) rows += (c ? ", " : "") + f.def->shader_matrix[static_cast<std::size_t>(3 * r + c)];
+        rows += "]";
+    }
+    std::ostringstream o;
+    o << "    // " << kLtcMember << ": the inverse matrix M^-1 of the linearly transformed cosine\n"
+      << "    // (Heitz et al. 2016) in the shading frame: normal +z, view (sin theta, 0, cos theta),\n"
+      << "    // tangent +x toward the view. It acts on column vectors: "
+      << (glsl ? kLtcMember + std::string(" * v") : "mul(" + std::string(kLtcMember) + ", v)") << " takes a\n"
+      << "    // light vertex v to the clamped cosine's frame (code using row vectors, v * M or\n"
+      << "    // mul(v, M), as HDRP's LTCSampleMatrix does, needs its transpose).\n"
+      << "    // Packing of '" << f.table.id << "', " << f.def->description << ":\n"
+      << "    //   M^-1 = [" << rows << "] by rows, of the channels above.\n"
+      << "    " << (glsl ? "mat3 " : "float3x3 ") << kLtcMember << ";\n";
+    return o.str();
+}
+
+std::string ltc_code(const FormContext& f) {
+    if (!ltc_matrix_applies(f)) return "";
+    const bool glsl = f.lang == ShaderLanguage::glsl;
+    const auto el = [&](int r, int c) {
+        return matrix_element(f, f.def->shader_matrix[static_cast<std::size_t>(3 * r + c)]);
+    };
+    std::ostringstream o;
+    if (glsl) {
+        o << "    // GLSL's mat3 constructor takes columns: column j = (M^-1[0][j], M^-1[1][j], M^-1[2][j]).\n"
+          << "    result." << kLtcMember << " = mat3(";
+        for (int c = 0; c < 3; ++c)
+            o << (c ? ", " : "") << "vec3(" << el(0, c) << ", " << el(1, c) << ", " << el(2, c) << ")";
+    } else {
+        o << "    // HLSL's float3x3 constructor takes rows: the same matrix as the GLSL function's,\n"
+          << "    // its text transposed (row i = (M^-1[i][0], M^-1[i][1], M^-1[i][2]); m[i] is row i).\n"
+          << "    result." << kLtcMember << " = float3x3(";
+        for (int r = 0; r < 3; ++r)
+            o << (r ? ", " : "") << "float3(" << el(r, 0) << ", " << el(r, 1) << ", " << el(r, 2) << ")";
+    }
+    o << ");\n";
+    return o.str();
+}
 
 const std::vector<ResultForm>& result_forms() {
-    static const std::vector<ResultForm> forms = {{"", none, none}};
+    static const std::vector<ResultForm> forms = {{"", "", none, none},
+                                                  {"ltc_inverse", kLtcMember, ltc_members, ltc_code}};
     return forms;
 }
 
-const ResultForm& result_form(const Table& t) {
-    std::string name;
+const TableDefinition* definition(const Table& t) {
     try {
-        name = find_table(t.id).shader_result;
+        return &find_table(t.id);
     } catch (const Error&) {
-        name.clear();  // a table not in the catalogue: its channels by name
+        return nullptr;  // a table not in the catalogue: its channels by name
     }
+}
+
+const ResultForm& result_form(const Table& t) {
+    const TableDefinition* def = definition(t);
+    const std::string name = def ? def->shader_result : "";
     std::string known;
     for (const ResultForm& f : result_forms()) {
         if (f.name == name) return f;
@@ -227,6 +326,8 @@ ShaderInterface shader_interface(const Table& t) {
     for (const std::string& a : parameter_axes(t)) si.parameters.push_back(parameter_name(a));
     si.fields = field_names(t);
     si.dimensions = t.axes.size() > 2 ? 3 : 2;
+    const ResultForm& form = result_form(t);
+    if (!form.member.empty() && own_channels(t)) si.matrix = form.member;
     return si;
 }
 
@@ -276,7 +377,8 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
     o << "struct " << si.result_type << " {\n";
     for (std::size_t c = 0; c < si.fields.size(); ++c)
         o << "    float " << si.fields[c] << ";  // " << kComponent[c] << ": " << t.channels[c] << "\n";
-    o << form.members(lang) << "};\n\n";
+    const FormContext context{t, definition(t), lang};
+    o << form.members(context) << "};\n\n";
 
     // Signature.
     const std::string tex = glsl ? (si.dimensions == 3 ? "sampler3D lut" : "sampler2D lut")
@@ -335,7 +437,7 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
     o << "    " << si.result_type << " result;\n";
     for (std::size_t c = 0; c < si.fields.size(); ++c)
         o << "    result." << si.fields[c] << " = texel." << kComponent[c] << ";\n";
-    o << form.code(lang);
+    o << form.code(context);
     o << "    return result;\n}\n";
     return o.str();
 }

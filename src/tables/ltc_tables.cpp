@@ -6,6 +6,7 @@
 // Unity HDRP LTCAreaLight.hlsl (LTCSampleMatrix: the transposed inverse
 //   divided by its m22, as _m00_m02_m11_m20 of the transpose)
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -125,6 +126,12 @@ struct Entry {
     std::vector<std::string> channels;
 };
 
+// The stored inverse matrix by rows (TableDefinition::shader_matrix), as the
+// evaluator packs it: Heitz (a, c, b, d) of [[a, 0, b], [0, 1, 0], [c, 0, d]];
+// HDRP (a, c, 1, b) / d.
+const std::array<std::string, 9> kHeitzMatrix = {"R", "0", "B", "0", "1", "0", "G", "0", "A"};
+const std::array<std::string, 9> kHdrpMatrix = {"R", "0", "A", "0", "B", "0", "G", "0", "1"};
+
 TableDefinition make(const Entry& e) {
     TableDefinition d;
     d.id = e.id;
@@ -134,6 +141,10 @@ TableDefinition make(const Entry& e) {
     d.options = {visibility_option()};
     d.preset = e.preset;
     d.searched_by_identify = false;  // a fit per texel: see catalogue.h
+    if (e.layout == Layout::heitz_matrix || e.layout == Layout::hdrp_matrix) {
+        d.shader_result = "ltc_inverse";
+        d.shader_matrix = e.layout == Layout::heitz_matrix ? kHeitzMatrix : kHdrpMatrix;
+    }
     const Layout layout = e.layout;
     const std::string layout_text = e.layout_text;
     const std::string preset = e.preset;
