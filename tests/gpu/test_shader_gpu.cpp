@@ -200,6 +200,106 @@ double position(const Axis& a, double v) {
     return std::clamp(a.position_of_value(covered(a, v)), 0.0, static_cast<double>(a.count - 1));
 }
 
+// The interface of a file's function as the library describes it, for the
+// wrapper shader.
+ShaderInterface interface_of(const LutDescription& d) {
+    Table shape;
+    shape.id = d.def->id;
+    shape.axes = d.settings.axes;
+    shape.channels = d.def->channels;
+    shape.channel_map = d.settings.channel_map;
+    if (!shape.channel_map.empty()) shape.channels.assign(shape.channel_map.size(), "");
+    return shader_interface(shape);
+}
+
+// `points` parameter points in the function's order (si.parameters), 10%
+// beyond each end of the range to exercise the clamps; axis_of_param[p] is
+// the storage axis of parameter p (-1: no axis of that name).
+std::vector<float> random_points(const std::vector<Axis>& axes, const ShaderInterface& si, int points,
+                                 std::uint32_t seed, std::vector<int>& axis_of_param) {
+    axis_of_param.clear();
+    for (const std::string& p : si.parameters) {
+        int found = -1;
+        for (std::size_t a = 0; a < axes.size(); ++a)
+            if (axes[a].name == p) found = static_cast<int>(a);
+        axis_of_param.push_back(found);
+        if (found < 0) return {};
+    }
+    std::mt19937 rng(seed);
+    const std::size_t np = si.parameters.size();
+    std::vector<float> in(static_cast<std::size_t>(points) * np);
+    for (int k = 0; k < points; ++k)
+        for (std::size_t p = 0; p < np; ++p) {
+            const Axis& a = axes[static_cast<std::size_t>(axis_of_param[p])];
+            const double lo = std::min(a.min, a.max), hi = std::max(a.min, a.max), span = hi - lo;
+            // A log axis is drawn uniform in log, the rest uniform in value.
+            double v;
+            if (a.warp == Warp::log) {
+                std::uniform_real_distribution<double> t(-0.1, 1.1);
+                v = lo * std::pow(hi / lo, t(rng));
+            } else {
+                std::uniform_real_distribution<double> t(lo - 0.1 * span, hi + 0.1 * span);
+                v = t(rng);
+            }
+            in[static_cast<std::size_t>(k) * np + p] = static_cast<float>(v);
+        }
+    return in;
+}
+
+// The parameters (storage order) of point k of `in`.
+std::vector<double> point_params(const std::vector<float>& in, const std::vector<int>& axis_of_param, int k) {
+    const std::size_t np = axis_of_param.size();
+    std::vector<double> params(np);
+    for (std::size_t p = 0; p < np; ++p)
+        params[static_cast<std::size_t>(axis_of_param[p])] = in[static_cast<std::size_t>(k) * np + p];
+    return params;
+}
+
+// The tolerance of the header comment (against sample) for file channel ci at storage
+// parameters `params`, from the cell around the point and its neighbours;
+// and the interpolation error bound of the exact check.
+struct Tolerance {
+    double tol = 0, interp = 0;
+    double d1[2] = {0, 0}, d2[2] = {0, 0};  // first and second neighbour differences per axis
+};
+Tolerance filter_tolerance(const ExrImage& img, const std::vector<Axis>& axes, const std::vector<double>& params,
+                           int ci, double we) {
+    std::vector<double> pos(axes.size());
+    for (std::size_t a = 0; a < axes.size(); ++a) pos[a] = position(axes[a], params[a]);
+    const int ix = static_cast<int>(std::floor(pos[0]));
+    const int iy = axes.size() > 1 ? static_cast<int>(std::floor(pos[1])) : 0;
+    Tolerance t;
+    double vmax = 0;
+    for (int j = -1; j <= 2; ++j)
+        for (int i = -1; i <= 2; ++i) {
+            const double t0 = texel(img, axes, ix + i, iy + j, ci);
+            vmax = std::max(vmax, std::abs(t0));
+            t.d1[0] = std::max(t.d1[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - t0));
+            t.d2[0] = std::max(t.d2[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - 2 * t0 +
+                                                 texel(img, axes, ix + i - 1, iy + j, ci)));
+            if (axes.size() > 1) {
+                t.d1[1] = std::max(t.d1[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - t0));
+                t.d2[1] = std::max(t.d2[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - 2 * t0 +
+                                                     texel(img, axes, ix + i, iy + j - 1, ci)));
+            }
+        }
+    t.tol = 4 * kEps * vmax;
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        t.tol += (we + 8 * kEps * axes[a].count) * t.d1[a];
+        // Linear interpolation error h^2 |f''| / 8 with h^2 f'' ~ the
+        // second difference; twice that for the variation of f''
+        // across the cell.
+        t.interp += 0.25 * t.d2[a];
+        // A cell at the edge of the range may hold a singular
+        // derivative (sqrt-like at mu = 0, alpha = 0, albedo = 1):
+        // linear interpolation of t^p over one cell errs by at most
+        // half the difference across it, for any 0 < p.
+        const int i0 = a == 0 ? ix : iy;
+        if (i0 <= 0 || i0 + 1 >= axes[a].count - 1) t.interp += 0.5 * t.d1[a];
+    }
+    return t;
+}
+
 struct Errors {
     double vs_sample = 0, vs_sample_tol = 0;  // worst |gpu - sample| and the tolerance at that point
     double worst_ratio_sample = 0;            // max |gpu - sample| / tolerance
@@ -247,43 +347,11 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
             << "the GLSL file's hash and the KTX2 file's metadata hash " << hash_line;
         EXPECT_EQ(hlsl.find(hash_line) != std::string::npos, expect_match);
 
-        // The interface as the library describes it, for the wrapper shader.
-        Table shape;
-        shape.id = d.def->id;
-        shape.axes = axes;
-        shape.channels = d.def->channels;
-        shape.channel_map = d.settings.channel_map;
-        if (!shape.channel_map.empty()) shape.channels.assign(shape.channel_map.size(), "");
-        const ShaderInterface si = shader_interface(shape);
-
-        // Parameter points in the function's order, 10% beyond each end of
-        // the range to exercise the clamps.
+        const ShaderInterface si = interface_of(d);
         std::vector<int> axis_of_param;
-        for (const std::string& p : si.parameters) {
-            int found = -1;
-            for (std::size_t a = 0; a < axes.size(); ++a)
-                if (axes[a].name == p) found = static_cast<int>(a);
-            ASSERT_GE(found, 0) << "parameter " << p;
-            axis_of_param.push_back(found);
-        }
-        std::mt19937 rng(seed);
+        const std::vector<float> in = random_points(axes, si, points, seed, axis_of_param);
+        ASSERT_FALSE(in.empty()) << "a parameter without an axis of its name";
         const std::size_t np = si.parameters.size();
-        std::vector<float> in(static_cast<std::size_t>(points) * np);
-        for (int k = 0; k < points; ++k)
-            for (std::size_t p = 0; p < np; ++p) {
-                const Axis& a = axes[static_cast<std::size_t>(axis_of_param[p])];
-                const double lo = std::min(a.min, a.max), hi = std::max(a.min, a.max), span = hi - lo;
-                // A log axis is drawn uniform in log, the rest uniform in value.
-                double v;
-                if (a.warp == Warp::log) {
-                    std::uniform_real_distribution<double> t(-0.1, 1.1);
-                    v = lo * std::pow(hi / lo, t(rng));
-                } else {
-                    std::uniform_real_distribution<double> t(lo - 0.1 * span, hi + 0.1 * span);
-                    v = t(rng);
-                }
-                in[static_cast<std::size_t>(k) * np + p] = static_cast<float>(v);
-            }
 
         // The exact model, for the second check.
         const PreparedTable prepared = d.def->prepare(d.settings);
@@ -312,14 +380,9 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
             const std::vector<float> res = runner().run(tex, spv, in, static_cast<std::uint32_t>(points), 4);
             Errors e;
             for (int k = 0; k < points; ++k) {
-                std::vector<double> params(axes.size());
-                for (std::size_t p = 0; p < np; ++p)
-                    params[static_cast<std::size_t>(axis_of_param[p])] = in[static_cast<std::size_t>(k) * np + p];
-                // The cell around the point and its neighbours.
+                const std::vector<double> params = point_params(in, axis_of_param, k);
                 std::vector<double> pos(axes.size());
                 for (std::size_t a = 0; a < axes.size(); ++a) pos[a] = position(axes[a], params[a]);
-                const int ix = static_cast<int>(std::floor(pos[0]));
-                const int iy = axes.size() > 1 ? static_cast<int>(std::floor(pos[1])) : 0;
                 const bool has_exact = k < exact_points;
                 const TexelValue exact = has_exact ? exact_values[static_cast<std::size_t>(k)] : TexelValue{};
                 // Beyond the first or last texel centre (center placement) the
@@ -336,36 +399,8 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
                     const int ci = static_cast<int>(c);
                     const double gpu_v = res[static_cast<std::size_t>(k) * 4 + c];
                     const double cpu_v = sample_lut(img, d, params, ci);
-                    // Neighbour differences (first, and second for interpolation).
-                    double d1[2] = {0, 0}, d2[2] = {0, 0}, vmax = 0;
-                    for (int j = -1; j <= 2; ++j)
-                        for (int i = -1; i <= 2; ++i) {
-                            const double t0 = texel(img, axes, ix + i, iy + j, ci);
-                            vmax = std::max(vmax, std::abs(t0));
-                            d1[0] = std::max(d1[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - t0));
-                            d2[0] = std::max(d2[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - 2 * t0 +
-                                                             texel(img, axes, ix + i - 1, iy + j, ci)));
-                            if (axes.size() > 1) {
-                                d1[1] = std::max(d1[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - t0));
-                                d2[1] = std::max(d2[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - 2 * t0 +
-                                                                 texel(img, axes, ix + i, iy + j - 1, ci)));
-                            }
-                        }
-                    double tol = 4 * kEps * vmax;
-                    double interp = 0;
-                    for (std::size_t a = 0; a < axes.size(); ++a) {
-                        tol += (we + 8 * kEps * axes[a].count) * d1[a];
-                        // Linear interpolation error h^2 |f''| / 8 with h^2 f'' ~ the
-                        // second difference; twice that for the variation of f''
-                        // across the cell.
-                        interp += 0.25 * d2[a];
-                        // A cell at the edge of the range may hold a singular
-                        // derivative (sqrt-like at mu = 0, alpha = 0, albedo = 1):
-                        // linear interpolation of t^p over one cell errs by at most
-                        // half the difference across it, for any 0 < p.
-                        const int i0 = a == 0 ? ix : iy;
-                        if (i0 <= 0 || i0 + 1 >= axes[a].count - 1) interp += 0.5 * d1[a];
-                    }
+                    const Tolerance tt = filter_tolerance(img, axes, params, ci, we);
+                    const double tol = tt.tol, interp = tt.interp;
                     const double diff = std::abs(gpu_v - cpu_v);
                     if (!(diff <= tol)) ++e.sample_failures;
                     if (!expect_match) break;
@@ -390,8 +425,8 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
                         ADD_FAILURE() << si.function << " field " << si.fields[c] << " at point " << k << ": gpu "
                                       << gpu_v << ", exact " << want << ", |diff| " << ex << " > error bound "
                                       << bound << " + interpolation " << interp << "; params " << params[0] << ", "
-                                      << params.back() << " pos " << pos[0] << ", " << pos.back() << " d2 " << d2[0]
-                                      << ", " << d2[1];
+                                      << params.back() << " pos " << pos[0] << ", " << pos.back() << " d2 " << tt.d2[0]
+                                      << ", " << tt.d2[1];
                         return;
                     }
                     e.vs_exact = std::max(e.vs_exact, ex);
