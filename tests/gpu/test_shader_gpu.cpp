@@ -36,6 +36,7 @@
 
 #include "brdflut/catalogue.h"
 #include "brdflut/formats.h"
+#include "brdflut/ltc.h"
 #include "brdflut/lut.h"
 #include "brdflut/shader.h"
 #include "../test_support.h"
@@ -74,8 +75,12 @@ std::string replace(std::string s, const std::string& from, const std::string& t
     return s;
 }
 
-// A compute shader that calls `function` (the generated source) once per point.
-std::string compute_shader(const ShaderInterface& si, const std::string& function, bool hlsl) {
+// A compute shader that calls `function` (the generated source) once per
+// point and writes its channels (4 floats a point) or, with `matrix`, the
+// 3x3 matrix of member si.matrix as the evaluation applies it to column
+// vectors (GLSL m * v, HLSL mul(m, v)): m e_j is column j, written to
+// output 3 row + j (9 floats a point, by rows).
+std::string compute_shader(const ShaderInterface& si, const std::string& function, bool hlsl, bool matrix = false) {
     std::ostringstream o;
     const std::size_t np = si.parameters.size();
     if (hlsl)
@@ -91,8 +96,19 @@ std::string compute_shader(const ShaderInterface& si, const std::string& functio
     o << "    " << si.result_type << " r = " << si.function << (hlsl ? "(lut, lut_sampler" : "(lut");
     for (std::size_t p = 0; p < np; ++p) o << ", points[i * " << np << "u + " << p << "u]";
     o << ");\n";
-    for (std::size_t c = 0; c < si.fields.size(); ++c)
-        o << "    results[i * 4u + " << c << "u] = r." << si.fields[c] << ";\n";
+    if (matrix) {
+        const char* basis[3] = {"1.0, 0.0, 0.0", "0.0, 1.0, 0.0", "0.0, 0.0, 1.0"};
+        for (int j = 0; j < 3; ++j) {
+            o << "    " << (hlsl ? "float3" : "vec3") << " column" << j << " = "
+              << (hlsl ? "mul(r." + si.matrix + ", float3(" : "r." + si.matrix + " * vec3(") << basis[j]
+              << (hlsl ? "));\n" : ");\n");
+            for (int row = 0; row < 3; ++row)
+                o << "    results[i * 9u + " << 3 * row + j << "u] = column" << j << "[" << row << "];\n";
+        }
+    } else {
+        for (std::size_t c = 0; c < si.fields.size(); ++c)
+            o << "    results[i * 4u + " << c << "u] = r." << si.fields[c] << ";\n";
+    }
     o << "}\n";
     return o.str();
 }
@@ -488,6 +504,86 @@ TEST(ShaderLookupMismatch, FunctionOfAnEndpointsTableOnACenterTextureIsCaught) {
 TEST(ShaderLookupMismatch, FunctionOfASquareWarpOnALinearTextureIsCaught) {
     check_config({"linear texture, square function", "ggx_albedo_avg --size 32 --warp alpha=linear"}, 1000, 4,
                  "ggx_albedo_avg --size 32 --warp alpha=square");
+}
+
+// The LTC matrix tables: each function's inverse_matrix, applied to the
+// basis vectors as the evaluation applies it to light vertices
+// (inverse_matrix * v in GLSL, mul(inverse_matrix, v) in HLSL), equals
+// element by element the matrix M^-1 built on the CPU from sample_lut's
+// filtered channels in the table's documented packing (ltc.h, ltc_tables.cpp;
+// Heitz's ltc_1 as three.js unpacks it, mat3(vec3(R, 0, G), vec3(0, 1, 0),
+// vec3(B, 0, A)) by columns; HDRP's loaded as the transpose,
+// invM._m00_m02_m11_m20 = RGBA, invM._m22 = 1, for mul(v, invM)). Each
+// element within the tolerance against sample of the channel it holds (the
+// header comment's), the constant elements exactly.
+//
+// The packing applied to channel values ch, with `one` for the constant 1
+// element: with the channels' tolerances and one = 0 it gives each
+// element's tolerance.
+Mat3 documented_inverse(const std::string& id, const double* ch, double one) {
+    if (id == "ltc_1") {
+        Mat3 m = LtcInverse{ch[0], ch[2], ch[1], ch[3]}.matrix();  // (a, c, b, d) = RGBA
+        m.m[1][1] *= one;
+        return m;
+    }
+    if (id == "hdrp_ltc_ggx") {
+        const Mat3 hdrp_inv_m{{{{ch[0], 0, ch[1]}, {0, ch[2], 0}, {ch[3], 0, one}}}};  // HDRP's invM
+        Mat3 m;
+        for (std::size_t r = 0; r < 3; ++r)
+            for (std::size_t c = 0; c < 3; ++c) m.m[r][c] = hdrp_inv_m.m[c][r];
+        return m;
+    }
+    throw std::runtime_error("no documented LTC packing for table '" + id + "'");
+}
+
+TEST(ShaderLookupLtc, InverseMatrixEqualsTheMatrixOfTheSampledChannelsOnLavapipe) {
+    TempDir dir;
+    const std::string out = (dir.path() / "luts").string();
+    const auto r = test::run_cli("generate ltc_1 hdrp_ltc_ggx --size 16x16 --quality draft --pixel half --format ktx2 "
+                                 "--shader glsl --shader hlsl -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const double we = weight_error();
+    const int points = 2000;
+    for (const std::string id : {"ltc_1", "hdrp_ltc_ggx"}) {
+        SCOPED_TRACE(id);
+        const std::string ktx = out + "/" + id + ".ktx2";
+        const ExrImage img = read_table_image(ktx);
+        const LutDescription d = describe_from_metadata(img, ktx);
+        const auto& axes = d.settings.axes;
+        const gpu::Texture tex = gpu::read_ktx2(ktx);
+        const ShaderInterface si = interface_of(d);
+        ASSERT_EQ(si.matrix, "inverse_matrix");
+        std::vector<int> axis_of_param;
+        const std::vector<float> in = random_points(axes, si, points, 29, axis_of_param);
+        ASSERT_FALSE(in.empty());
+        for (const bool hlsl : {false, true}) {
+            SCOPED_TRACE(hlsl ? "HLSL" : "GLSL");
+            const std::string src = test::read_file(out + "/" + id + (hlsl ? ".hlsl" : ".glsl"));
+            const auto spv = gpu::compile_compute(glslang(), compute_shader(si, src, hlsl, true), hlsl,
+                                                  dir.path().string());
+            const std::vector<float> res = runner().run(tex, spv, in, points, 9);
+            double worst_ratio = 0;
+            for (int k = 0; k < points; ++k) {
+                const std::vector<double> params = point_params(in, axis_of_param, k);
+                double ch[4], tol[4];
+                for (int c = 0; c < 4; ++c) {
+                    ch[c] = sample_lut(img, d, params, c);
+                    tol[c] = filter_tolerance(img, axes, params, c, we).tol;
+                }
+                const Mat3 want = documented_inverse(id, ch, 1.0), allowed = documented_inverse(id, tol, 0.0);
+                for (std::size_t e = 0; e < 9; ++e) {
+                    const double w = want.m[e / 3][e % 3], a = allowed.m[e / 3][e % 3];
+                    const double got = res[static_cast<std::size_t>(k) * 9 + e];
+                    ASSERT_LE(std::abs(got - w), a)
+                        << "M^-1[" << e / 3 << "][" << e % 3 << "] at point " << k << " (" << params[0] << ", "
+                        << params[1] << "): gpu " << got << ", from sampled channels " << w;
+                    if (a > 0) worst_ratio = std::max(worst_ratio, std::abs(got - w) / a);
+                }
+            }
+            std::printf("%-13s %s inverse_matrix: %d points, max |gpu - sampled M^-1| / tolerance %.2f\n",
+                        id.c_str(), hlsl ? "HLSL" : "GLSL", points, worst_ratio);
+        }
+    }
 }
 
 // A 3-axis table (none is in the catalogue yet): its file stacks the z
