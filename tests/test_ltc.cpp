@@ -229,12 +229,18 @@ TEST(LtcHeitz, SphereChannelAndAxesMatchThePublishedLtc2) {
     EXPECT_LT(worst, 1e-4);  // Heitz computes it in float
 }
 
+// On an 8x8 spread of the grid (grazing row and r = 1 included): the refit's
+// largest light error is lower at three quarters of the texels, its worst
+// texel is better than Heitz's worst, and no texel is more than 3 times
+// Heitz's error (floor 1e-3). Not twice: at r = 1 in the grazing row
+// Heitz's stored n0 is 6 % below the albedo, which offsets his LTC's excess
+// light (with the exact n0 his matrix does worse than the refit there).
 TEST(LtcHeitz, RefitGivesLessIntegratedLightErrorThanThePublishedTable) {
     const std::vector<double> t1 = read_fixture("three_ltc_1.txt");
     const std::vector<double> t2 = read_fixture("three_ltc_2.txt");
     ASSERT_EQ(t1.size(), 64u * 64u * 4u);
     int wins = 0, n = 0;
-    double worst_ratio = 0.0;
+    double worst_ratio = 0.0, mine_worst = 0.0, heitz_worst = 0.0;
     for (int t = 0; t < 64; t += 9)
         for (int a = 0; a < 64; a += 9) {
             const double mu = mu_of(t), alpha = alpha_of(a);
@@ -247,9 +253,12 @@ TEST(LtcHeitz, RefitGivesLessIntegratedLightErrorThanThePublishedTable) {
             ++n;
             if (mine.light_max <= pub.light_max) ++wins;
             worst_ratio = std::max(worst_ratio, mine.light_max / std::max(pub.light_max, 1e-3));
+            mine_worst = std::max(mine_worst, mine.light_max);
+            heitz_worst = std::max(heitz_worst, pub.light_max);
         }
     EXPECT_GE(wins, n * 3 / 4) << wins << " of " << n;
-    EXPECT_LT(worst_ratio, 6.0);
+    EXPECT_LT(worst_ratio, 3.0);
+    EXPECT_LT(mine_worst, heitz_worst);
 }
 
 TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {

@@ -121,7 +121,7 @@ struct LtcFit {
     LtcInverse minv;           // normalized by the middle element
     double n0 = 0, n1 = 0;     // int f cos, int f (1 - v.h)^5 cos (ggx_split_sum)
     double n0_error = 0, n1_error = 0;
-    double objective = 0;      // the fit's objective (Heitz's measure, relative; ltc_fit.cpp)
+    double objective = 0;      // the fit's objective (Heitz's measure + 0.3 x triangular discrimination; ltc_fit.cpp)
     double below_horizon = 0;  // LTC mass below the horizon (of 1)
     std::array<double, 4> params{};  // the optimizer's (theta, ln m11, ln m22, m13 / m11)
     int evaluations = 0;

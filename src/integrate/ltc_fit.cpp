@@ -18,10 +18,13 @@
 //     a first quadrature of p about the mirror direction: w = s0 / 2 with
 //     s0 = 1 / sqrt(pi p_max), the scale of the cosine whose peak density
 //     equals the lobe's.
-//  3. The objective: Heitz's error measure, J = int |p - D|^3 / (p + D) dw
+//  3. The objective: Heitz's error measure, int |p - D|^3 / (p + D) dw
 //     / int p^2 dw over the sphere (p = 0 below the horizon, so LTC mass
-//     there costs), by quadrature where Heitz samples it. (The relative L3
-//     error, int |p - D|^3 / int p^3, reported for every texel, gave larger
+//     there costs), by quadrature where Heitz samples it, plus 0.3 times
+//     the triangular discrimination int (p - D)^2 / (p + D) dw, which
+//     bounds the integrated-light error of every polygon (objective()
+//     says why and how it is weighted). (The relative L3 error,
+//     int |p - D|^3 / int p^3, reported for every texel, gave larger
 //     integrated-light errors when used as the objective.)
 //  4. The parameters: M = R(theta) [[m11, 0, m13], [0, m22, 0], [0, 0, 1]]
 //     with R(theta) the rotation about y taking z to (sin theta, 0, cos
@@ -278,17 +281,50 @@ inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv,
     return pz > 0.0 ? pz * det_over_pi / (l2 * l2) : 0.0;
 }
 
-// The fit's objective, Heitz's error measure computed by quadrature instead
-// of by sampling: J = int |p - D|^3 / (p + D) dw / int p^2 dw.
+// The fit's objective: Heitz's error measure, computed by quadrature instead
+// of by sampling, plus a multiple of the triangular discrimination T of the
+// two densities,
+//   J = int |p - D|^3 / (p + D) dw / int p^2 dw + w T,
+//   T = int (p - D)^2 / (p + D) dw,   w = kMassWeight.
+// T bounds the integrated-light error of every polygon:
+// the LTC's light is n0 times its mass in the polygon and the lobe's n0
+// times p's, and the largest difference of two densities' masses over any
+// region is half their L1 distance, which is at most sqrt(2 T) (Cauchy-
+// Schwarz with int (p + D) = 2). Heitz's measure alone, weighted by p^2,
+// barely sees mass that the LTC spreads thinly far from the peak: at
+// grazing view and small roughness its optimum put a quarter of the LTC's
+// mass behind the viewer, and the light of the peak lost as much. Where
+// p = 0 the integrand of T is D, so T is computed as the quadrature over
+// p > 0 plus 1 - (the quadrature of D over p > 0), with int D = 1 exactly:
+// LTC mass anywhere outside the lobe counts, whether or not a node of the
+// grid falls on it. Both terms are smooth in the parameters (an L1 term,
+// with its kink at p = D inside the panels, made the fitted table noisy).
+// The weight, measured on the 64x64 table: the largest integrated-light
+// error is 0.36 of n0 with Heitz's measure alone, 0.19 at w = 0.3, 0.18 at
+// w = 1 and 0.28 at w = 0.1. The minima of the two terms part in the middle
+// of the table, and the fitted coefficients step from one to the other
+// along a line of texels: second differences of the stored coefficients
+// between neighbours above 0.03 away from the last three rows at no texel
+// with Heitz's measure alone, at 18 (up to 0.044) at w = 0.3 and at 33 (up
+// to 0.056) at w = 1.
+constexpr double kMassWeight = 0.3;
+
 double objective(const SphereGrid& g, const Mat3& minv) {
     const double det = std::abs(minv.det()) / kPi;
-    double sum = 0.0;
+    double heitz = 0.0, tri = 0.0, inside = 0.0;
     for (std::size_t i = 0; i < g.size(); ++i) {
         const double d = grid_density(g, i, minv, det);
-        const double e = std::abs(g.p[i] - d), den = g.p[i] + d;
-        if (den > 0.0) sum += g.w[i] * e * e * e / den;
+        const double p = g.p[i];
+        if (p > 0.0) {
+            const double e = std::abs(p - d), den = p + d;
+            heitz += g.w[i] * e * e * e / den;
+            tri += g.w[i] * e * e / den;
+            inside += g.w[i] * d;
+        } else {
+            heitz += g.w[i] * d * d;
+        }
     }
-    return sum / g.p2;
+    return heitz / g.p2 + kMassWeight * (tri + std::max(0.0, 1.0 - inside));
 }
 
 // (int |p - D|^3 dw / int p^3 dw)^(1/3).

@@ -86,7 +86,9 @@ double median(std::vector<double> v) {
 const char* kRule =
     "per texel: Nelder-Mead in double on all four parameters of a y-symmetric LTC from an initial "
     "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
-    "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure) by "
+    "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure) + "
+    "0.3 int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every polygon's light "
+    "error), by "
     "Gauss-Legendre product quadrature in stereographic coordinates about the lobe's peak, split at "
     "the horizon; n0, n1 by the ggx_dfg quadrature";
 
