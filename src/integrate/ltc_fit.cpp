@@ -632,10 +632,22 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
     const Vec3 t1 = f.t1();
     const Vec3 y{0, 1, 0};
     std::vector<double> breaks{0.0, kTwoPi};
-    for (const Vec3& v : light.vertices) {
+    auto add_break = [&](const Vec3& v) {
         double phi = f.phi_of_azimuth(std::atan2(dot(v, y), dot(v, t1)));
         if (phi < 0.0) phi += kTwoPi;
         breaks.push_back(phi);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3& a = light.vertices[i];
+        const Vec3& b = light.vertices[(i + 1) % n];
+        add_break(a);
+        // Where an edge crosses the horizon the ray's interval changes from
+        // one bound to another: a kink in phi, made a panel end. (The chord's
+        // point at z = 0 projects radially onto the arc.)
+        if ((a.z > 0.0) != (b.z > 0.0)) {
+            const double t = a.z / (a.z - b.z);
+            add_break(add(a, scale(add(b, scale(a, -1.0)), t)));
+        }
     }
     std::sort(breaks.begin(), breaks.end());
     AdaptiveOptions outer;
