@@ -278,6 +278,29 @@ TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
     }
 }
 
+TEST(LtcTables, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
+    // ltc_1's metadata maxima (exact light to 1e-4 of n0) against the
+    // per-texel channels of ltc_ggx_error on the same grid (to 1e-7).
+    const TableDefinition& m = find_table("ltc_1");
+    const TableDefinition& r = find_table("ltc_ggx_error");
+    TableSettings s = default_settings(m);
+    s.axes[0].count = 4;
+    s.axes[1].count = 5;
+    const Table tm = generate(m, s), tr = generate(r, s);
+    const nlohmann::json& fe = tm.method.at("fit_error");
+    double l3 = 0.0, below = 0.0, light = 0.0;
+    for (std::size_t k = 0; k < tr.texel_count(); ++k) {
+        l3 = std::max(l3, tr.at(k, 0));
+        below = std::max(below, tr.at(k, 1));
+        light = std::max(light, tr.at(k, 2));
+    }
+    EXPECT_GT(light, 1e-3);  // the grid has grazing, rough texels: not a trivial maximum
+    EXPECT_NEAR(fe.at("light_error_max").get<double>(), light, 1e-4);
+    EXPECT_NEAR(fe.at("relative_l3_max").get<double>(), l3, 1e-12);
+    EXPECT_NEAR(fe.at("below_horizon_max").get<double>(), below, 1e-12);
+    EXPECT_DOUBLE_EQ(fe.at("light_tolerance").get<double>(), 1e-4);
+}
+
 TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
     const TableDefinition& h = find_table("ltc_1");
     const TableDefinition& u = find_table("hdrp_ltc_ggx");
@@ -301,7 +324,7 @@ TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
 namespace brdflut {
 namespace {
 TEST(LtcVerify, ClosedFormAndLocalMinimumChecksPass) {
-    for (const char* id : {"ltc_1", "ltc_2"}) {
+    for (const char* id : {"ltc_1", "ltc_2", "hdrp_ltc_ggx"}) {
         const std::vector<CheckRow> rows = verify_table(find_table(id));
         ASSERT_FALSE(rows.empty()) << id;
         for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;

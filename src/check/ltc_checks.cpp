@@ -1,13 +1,63 @@
 // verify's checks of the LTC tables: the norms and the sphere channel
-// against closed forms, and each fit against its own objective.
+// against closed forms, each fit against its own objective, and the error
+// maxima in the matrix tables' metadata against a recomputation.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "brdflut/catalogue.h"
+#include "brdflut/generate.h"
+#include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "brdflut/verify.h"
 #include "check/ltc_checks.h"
 
 namespace brdflut {
+
+namespace {
+// Generates the matrix table `id` on a 5x4 grid and recomputes each texel's
+// error report from the stored matrix, with the exact light at a tolerance
+// 1000 times finer than the metadata's: the row is the largest difference
+// between the metadata's maxima (light error, relative L3 error, mass below
+// the horizon) and the recomputed ones.
+std::pair<double, std::string> metadata_maxima_error(const std::string& id) {
+    const TableDefinition& def = find_table(id);
+    TableSettings s = default_settings(def);
+    s.axes[0].count = 5;
+    s.axes[1].count = 4;
+    const Table t = generate(def, s);
+    const bool hdrp = id == "hdrp_ltc_ggx";
+    const nlohmann::json& fe = t.method.at("fit_error");
+    LtcFitOptions fine;
+    fine.light_tolerance = 1e-3 * fe.at("light_tolerance").get<double>();
+    double light = 0.0, l3 = 0.0, below = 0.0;
+    for (std::size_t k = 0; k < t.texel_count(); ++k) {
+        const int ix = static_cast<int>(k % 5), iy = static_cast<int>(k / 5);
+        const double r = s.axes[0].value(ix), mu = s.axes[1].value(iy);
+        const double alpha = std::max(alpha_from_perceptual(r), hdrp ? 1e-3 : 0.0);
+        const double v[4] = {t.at(k, 0), t.at(k, 1), t.at(k, 2), t.at(k, 3)};
+        // ltc_1: (a, c, b, d) of M^-1 / m11; hdrp: (m00, m20, m11, m02) of M^-1 / m22.
+        const Mat3 minv = hdrp ? Mat3{{{{v[0], 0, v[3]}, {0, v[2], 0}, {v[1], 0, 1}}}}
+                               : LtcInverse{v[0], v[2], v[1], v[3]}.matrix();
+        const Estimate<2> n = ggx_split_sum(std::max(mu, kLtcMinMu), std::max(alpha, kLtcMinAlpha),
+                                            Visibility::height_correlated, kGgxTableTolerance);
+        const LtcTexelReport rep = ltc_texel_report(mu, alpha, Visibility::height_correlated, minv,
+                                                    n.value[0] + n.value[1], fine);
+        light = std::max(light, rep.light_max);
+        l3 = std::max(l3, rep.relative_l3);
+        below = std::max(below, rep.below_horizon);
+    }
+    const double d[3] = {std::abs(fe.at("light_error_max").get<double>() - light),
+                         std::abs(fe.at("relative_l3_max").get<double>() - l3),
+                         std::abs(fe.at("below_horizon_max").get<double>() - below)};
+    const char* names[3] = {"light_error_max", "relative_l3_max", "below_horizon_max"};
+    const int w = static_cast<int>(std::max_element(d, d + 3) - d);
+    std::ostringstream where;
+    where << names[w] << " " << fe.at(names[w]).get<double>() << " against " << (w == 0 ? light : w == 1 ? l3 : below)
+          << " recomputed (5x4 grid)";
+    return {d[w], where.str()};
+}
+}  // namespace
 
 void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
     using Result = std::pair<double, std::string>;
@@ -65,6 +115,14 @@ void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
                  }
              return r;
          }},
+        // The light errors differ by the exact light's own error, at most the
+        // metadata's tolerance (1e-4 of n0) per light.
+        {"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
+         [](const TexelEvaluator&) { return metadata_maxima_error("ltc_1"); }},
+    };
+    m["hdrp_ltc_ggx"] = {
+        {"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
+         [](const TexelEvaluator&) { return metadata_maxima_error("hdrp_ltc_ggx"); }},
     };
 }
 

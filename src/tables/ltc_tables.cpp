@@ -26,10 +26,22 @@ enum class Layout {
 };
 
 // The figures each texel's fit leaves for the table-wide summary, one slot
-// per texel (written only by that texel's evaluation).
+// per texel (written only by that texel's evaluation). The matrix tables
+// also record each texel's error report (relative L3 error, integrated-light
+// error over the bank) for the maxima in their metadata.
 struct FitFigures {
-    std::vector<double> objective, below_horizon;
+    std::vector<double> objective, below_horizon, relative_l3, light_max;
 };
+
+// The tolerance of the exact light behind the matrix tables' metadata
+// figures, relative to n0 (each light's integral within it): the errors
+// they summarize are 1e-3 and more where they matter (the largest 0.19, the
+// median 0.01), and the exact light at the quality's tolerance (1e-7 at
+// default) costs twice the fit, at 1e-4 about as much as the fit.
+// ltc_ggx_error computes every texel's figures at the quality's tolerance.
+constexpr double kSummaryLightTolerance = 1e-4;
+
+bool is_matrix(Layout l) { return l == Layout::heitz_matrix || l == Layout::hdrp_matrix; }
 
 class LtcEvaluator final : public TexelEvaluator {
 public:
@@ -46,6 +58,13 @@ public:
         if (figures_ && texel < figures_->objective.size()) {
             figures_->objective[texel] = fit.objective;
             figures_->below_horizon[texel] = fit.below_horizon;
+            if (is_matrix(layout_)) {
+                LtcFitOptions summary = opt_;
+                summary.light_tolerance = std::max(opt_.light_tolerance, kSummaryLightTolerance);
+                const LtcTexelReport rep = ltc_texel_report(mu, alpha, vis_, fit.minv.matrix(), fit.n0, summary);
+                figures_->relative_l3[texel] = rep.relative_l3;
+                figures_->light_max[texel] = rep.light_max;
+            }
         }
         const LtcInverse& m = fit.minv;
         switch (layout_) {
@@ -160,6 +179,10 @@ TableDefinition make(const Entry& e) {
         auto figures = std::make_shared<FitFigures>();
         figures->objective.assign(texels, 0.0);
         figures->below_horizon.assign(texels, 0.0);
+        if (is_matrix(layout)) {
+            figures->relative_l3.assign(texels, 0.0);
+            figures->light_max.assign(texels, 0.0);
+        }
         PreparedTable p;
         p.evaluator = std::make_unique<LtcEvaluator>(layout, vis, opt, figures);
         p.model = ltc_model(vis, layout == Layout::hdrp_matrix ? "hdrp" : layout_text);
@@ -176,12 +199,22 @@ TableDefinition make(const Entry& e) {
                                  "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
                                  "the polygon, relative tolerance " +
                                  std::to_string(opt.light_tolerance);
-        p.finish = [figures, layout](Table& t) {
+        p.finish = [figures, layout, opt](Table& t) {
             nlohmann::json fe;
             fe["objective_max"] = *std::max_element(figures->objective.begin(), figures->objective.end());
             fe["objective_median"] = median(figures->objective);
             fe["below_horizon_max"] =
                 *std::max_element(figures->below_horizon.begin(), figures->below_horizon.end());
+            if (is_matrix(layout)) {
+                fe["relative_l3_max"] =
+                    *std::max_element(figures->relative_l3.begin(), figures->relative_l3.end());
+                fe["relative_l3_median"] = median(figures->relative_l3);
+                fe["light_error_max"] = *std::max_element(figures->light_max.begin(), figures->light_max.end());
+                fe["light_error_median"] = median(figures->light_max);
+                fe["light_tolerance"] = std::max(opt.light_tolerance, kSummaryLightTolerance);
+                fe["lights"] = "the bank of ltc_light_bank (as ltc_ggx_error); light errors are the largest "
+                               "over the bank, as fractions of n0";
+            }
             if (layout == Layout::report) {
                 const char* names[4] = {"relative_l3", "below_horizon", "light_error_max", "light_error_mean"};
                 for (int c = 0; c < 4; ++c) {
