@@ -56,10 +56,15 @@ int main(int argc, char** argv) {
         std::printf("ltc_1 64x64, %d thread(s): wall %.2f s, CPU %.2f s\n", threads, wall, cpu_seconds() - c0);
     }
     std::printf("load average after the fits: %s\n", load_average().c_str());
+    const nlohmann::json& fe = t.method["fit_error"];
     std::printf("fit objective: max %.4g, median %.4g; LTC mass below the horizon: max %.4g\n",
-                t.method["fit_error"]["objective_max"].get<double>(),
-                t.method["fit_error"]["objective_median"].get<double>(),
-                t.method["fit_error"]["below_horizon_max"].get<double>());
+                fe["objective_max"].get<double>(), fe["objective_median"].get<double>(),
+                fe["below_horizon_max"].get<double>());
+    std::printf("metadata (exact light to %.0e of n0): light error max %.4g, median %.4g; relative L3 max %.4g, "
+                "median %.4g\n",
+                fe["light_tolerance"].get<double>(), fe["light_error_max"].get<double>(),
+                fe["light_error_median"].get<double>(), fe["relative_l3_max"].get<double>(),
+                fe["relative_l3_median"].get<double>());
 
     const std::vector<double> t1 = read_numbers(dir + "/three_ltc_1.txt");
     const std::vector<double> t2 = read_numbers(dir + "/three_ltc_2.txt");
