@@ -141,46 +141,101 @@ constexpr PanelWeights<K> panel_weights() {
 
 // The Kronrod and Gauss sums of a panel's values y (in kronrod_panel_k's node
 // order) and the Kronrod sum of |y - mean|, mean = Kronrod sum / 2, per
-// channel. Each channel's terms are added in node order; with SSE2 two
-// channels go side by side (the same operations, so the same bits). The
-// Gauss sum skips the nodes where its weight is 0, which adds exactly 0.
+// channel. Each sum is split into short chains instead of one chain of K
+// additions (each addition waiting for the one before): node n goes to
+// partial sum n % 4 of the Kronrod sums, the Gauss nodes alternately to two,
+// and the partial sums are added as (s0 + s1) + (s2 + s3). The order is
+// fixed, so the bits do not depend on the machine; with SSE2 two channels go
+// side by side by the same operations. The Gauss sum skips the nodes where
+// its weight is 0 (the centre starts one chain, then each pair's nodes go one
+// to each).
+template <int K>
+struct GaussNodes {
+    static constexpr int count = K / 2;  // the centre and the pairs j = 1, 3, ..
+    std::array<int, count> n{};
+};
+template <int K>
+constexpr GaussNodes<K> gauss_nodes() {
+    GaussNodes<K> g;
+    int m = 0;
+    g.n[static_cast<std::size_t>(m++)] = 0;
+    for (int j = 1; j < K / 2; j += 2) {
+        g.n[static_cast<std::size_t>(m++)] = 1 + 2 * j;
+        g.n[static_cast<std::size_t>(m++)] = 2 + 2 * j;
+    }
+    return g;
+}
+
 template <int K, std::size_t N>
 void panel_sums(const std::array<std::array<double, N>, K>& y, std::array<double, N>& k,
                 std::array<double, N>& g, std::array<double, N>& asc) {
     static constexpr PanelWeights<K> W = panel_weights<K>();
-    constexpr int half = K / 2;
+    static constexpr GaussNodes<K> G = gauss_nodes<K>();
+    static_assert(K % 4 == 3 && G.count % 2 == 1, "the partial sums below assume K = 4 m + 3");
     std::size_t i = 0;
 #if defined(__SSE2__)
     for (; i + 2 <= N; i += 2) {
-        __m128d kv = _mm_setzero_pd(), gv = _mm_setzero_pd(), av = _mm_setzero_pd();
-        for (int n = 0; n < K; ++n)
-            kv = _mm_add_pd(kv, _mm_mul_pd(_mm_set1_pd(W.wk[static_cast<std::size_t>(n)]), _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i])));
-        gv = _mm_add_pd(gv, _mm_mul_pd(_mm_set1_pd(W.wg[0]), _mm_loadu_pd(&y[0][i])));
-        for (int j = 1; j < half; j += 2)
-            for (int n = 1 + 2 * j; n <= 2 + 2 * j; ++n)
-                gv = _mm_add_pd(gv, _mm_mul_pd(_mm_set1_pd(W.wg[static_cast<std::size_t>(n)]), _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i])));
+        auto at = [&](int n) { return _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i]); };
+        auto wk = [&](int n) { return _mm_set1_pd(W.wk[static_cast<std::size_t>(n)]); };
+        __m128d k0 = _mm_mul_pd(wk(0), at(0)), k1 = _mm_mul_pd(wk(1), at(1)), k2 = _mm_mul_pd(wk(2), at(2)),
+                k3 = _mm_setzero_pd();
+        for (int n = 3; n < K; n += 4) {
+            k3 = _mm_add_pd(k3, _mm_mul_pd(wk(n), at(n)));
+            k0 = _mm_add_pd(k0, _mm_mul_pd(wk(n + 1), at(n + 1)));
+            k1 = _mm_add_pd(k1, _mm_mul_pd(wk(n + 2), at(n + 2)));
+            k2 = _mm_add_pd(k2, _mm_mul_pd(wk(n + 3), at(n + 3)));
+        }
+        __m128d g0 = _mm_mul_pd(_mm_set1_pd(W.wg[0]), at(0)), g1 = _mm_setzero_pd();
+        for (int m = 1; m < G.count; m += 2) {
+            const int a = G.n[static_cast<std::size_t>(m)], b = G.n[static_cast<std::size_t>(m + 1)];
+            g1 = _mm_add_pd(g1, _mm_mul_pd(_mm_set1_pd(W.wg[static_cast<std::size_t>(a)]), at(a)));
+            g0 = _mm_add_pd(g0, _mm_mul_pd(_mm_set1_pd(W.wg[static_cast<std::size_t>(b)]), at(b)));
+        }
+        const __m128d kv = _mm_add_pd(_mm_add_pd(k0, k1), _mm_add_pd(k2, k3));
         const __m128d mean = _mm_mul_pd(_mm_set1_pd(0.5), kv);
         const __m128d sign = _mm_set1_pd(-0.0);
-        for (int n = 0; n < K; ++n) {
-            const __m128d d = _mm_andnot_pd(sign, _mm_sub_pd(_mm_loadu_pd(&y[static_cast<std::size_t>(n)][i]), mean));
-            av = _mm_add_pd(av, _mm_mul_pd(_mm_set1_pd(W.wk[static_cast<std::size_t>(n)]), d));
+        auto dev = [&](int n) { return _mm_mul_pd(wk(n), _mm_andnot_pd(sign, _mm_sub_pd(at(n), mean))); };
+        __m128d a0 = dev(0), a1 = dev(1), a2 = dev(2), a3 = _mm_setzero_pd();
+        for (int n = 3; n < K; n += 4) {
+            a3 = _mm_add_pd(a3, dev(n));
+            a0 = _mm_add_pd(a0, dev(n + 1));
+            a1 = _mm_add_pd(a1, dev(n + 2));
+            a2 = _mm_add_pd(a2, dev(n + 3));
         }
         _mm_storeu_pd(&k[i], kv);
-        _mm_storeu_pd(&g[i], gv);
-        _mm_storeu_pd(&asc[i], av);
+        _mm_storeu_pd(&g[i], _mm_add_pd(g0, g1));
+        _mm_storeu_pd(&asc[i], _mm_add_pd(_mm_add_pd(a0, a1), _mm_add_pd(a2, a3)));
     }
 #endif
     for (; i < N; ++i) {
-        double kv = 0.0, gv = 0.0, av = 0.0;
-        for (int n = 0; n < K; ++n) kv += W.wk[static_cast<std::size_t>(n)] * y[static_cast<std::size_t>(n)][i];
-        gv += W.wg[0] * y[0][i];
-        for (int j = 1; j < half; j += 2)
-            for (int n = 1 + 2 * j; n <= 2 + 2 * j; ++n) gv += W.wg[static_cast<std::size_t>(n)] * y[static_cast<std::size_t>(n)][i];
+        auto at = [&](int n) { return y[static_cast<std::size_t>(n)][i]; };
+        auto wk = [&](int n) { return W.wk[static_cast<std::size_t>(n)]; };
+        double k0 = wk(0) * at(0), k1 = wk(1) * at(1), k2 = wk(2) * at(2), k3 = 0.0;
+        for (int n = 3; n < K; n += 4) {
+            k3 += wk(n) * at(n);
+            k0 += wk(n + 1) * at(n + 1);
+            k1 += wk(n + 2) * at(n + 2);
+            k2 += wk(n + 3) * at(n + 3);
+        }
+        double g0 = W.wg[0] * at(0), g1 = 0.0;
+        for (int m = 1; m < G.count; m += 2) {
+            const int a = G.n[static_cast<std::size_t>(m)], b = G.n[static_cast<std::size_t>(m + 1)];
+            g1 += W.wg[static_cast<std::size_t>(a)] * at(a);
+            g0 += W.wg[static_cast<std::size_t>(b)] * at(b);
+        }
+        const double kv = (k0 + k1) + (k2 + k3);
         const double mean = 0.5 * kv;
-        for (int n = 0; n < K; ++n) av += W.wk[static_cast<std::size_t>(n)] * std::abs(y[static_cast<std::size_t>(n)][i] - mean);
+        auto dev = [&](int n) { return wk(n) * std::abs(at(n) - mean); };
+        double a0 = dev(0), a1 = dev(1), a2 = dev(2), a3 = 0.0;
+        for (int n = 3; n < K; n += 4) {
+            a3 += dev(n);
+            a0 += dev(n + 1);
+            a1 += dev(n + 2);
+            a2 += dev(n + 3);
+        }
         k[i] = kv;
-        g[i] = gv;
-        asc[i] = av;
+        g[i] = g0 + g1;
+        asc[i] = (a0 + a1) + (a2 + a3);
     }
 }
 
