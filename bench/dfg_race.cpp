@@ -9,10 +9,11 @@
 // clear_shared_results so that no split sum is reused) and the baseline in
 // float and in double arithmetic, the order alternating between rounds so a
 // drift of the machine's speed hits all alike; the medians and their ratio
-// are printed. Then every table is compared with ggx_dfg at
-// --quality reference: largest and rms difference of the values as stored
-// in float. The lines starting with a keyword and key=value fields are the
-// machine-readable output that bench/readme_figures.py renders into README.md.
+// are printed, and the same for the process's CPU time (all threads). Then
+// every table is compared with ggx_dfg at --quality reference: largest and
+// rms difference of the values as stored in float. The lines starting with a
+// keyword and key=value fields are the machine-readable output that
+// brdflut_readme_figures (readme_figures.cpp) renders into README.md.
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <string>
 #include <thread>
 #include <vector>
@@ -40,6 +42,14 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// CPU time of the whole process (every thread), in seconds: on a loaded
+// machine it compares the programs' work where wall times only add noise.
+double cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 double median(std::vector<double> v) {
@@ -129,6 +139,7 @@ int main(int argc, char** argv) {
     // walls[threads index][program] = one entry per round
     std::vector<std::vector<std::vector<double>>> walls(thread_counts.size(),
                                                         std::vector<std::vector<double>>(3));
+    auto cpus = walls;  // the same for the process's CPU time
     Table quad;
     std::vector<float> kf, kd;
     for (int r = 0; r < rounds; ++r)
@@ -136,6 +147,7 @@ int main(int argc, char** argv) {
             const int threads = thread_counts[ti];
             auto run = [&](int program) {
                 const auto t0 = Clock::now();
+                const double c0 = cpu_seconds();
                 if (program == 0) {
                     clear_shared_results();
                     GenerateOptions opt;
@@ -147,6 +159,7 @@ int main(int argc, char** argv) {
                     kd = karis_table<double>(mu, alpha, samples, threads);
                 }
                 walls[ti][static_cast<std::size_t>(program)].push_back(seconds_since(t0));
+                cpus[ti][static_cast<std::size_t>(program)].push_back(cpu_seconds() - c0);
             };
             if (r % 2 == 0)
                 for (int p = 0; p < 3; ++p) run(p);
@@ -157,13 +170,15 @@ int main(int argc, char** argv) {
     for (std::size_t ti = 0; ti < thread_counts.size(); ++ti) {
         for (std::size_t p = 0; p < 3; ++p) {
             const std::vector<double>& w = walls[ti][p];
-            std::printf("time program=%s threads=%d median_s=%.4f min_s=%.4f max_s=%.4f\n", names[p],
-                        thread_counts[ti], median(w), *std::min_element(w.begin(), w.end()),
-                        *std::max_element(w.begin(), w.end()));
+            std::printf("time program=%s threads=%d median_s=%.4f min_s=%.4f max_s=%.4f median_cpu_s=%.4f\n",
+                        names[p], thread_counts[ti], median(w), *std::min_element(w.begin(), w.end()),
+                        *std::max_element(w.begin(), w.end()), median(cpus[ti][p]));
         }
-        const double q = median(walls[ti][0]);
-        std::printf("ratio threads=%d ggx_dfg_over_karis_float=%.3f ggx_dfg_over_karis_double=%.3f\n",
-                    thread_counts[ti], q / median(walls[ti][1]), q / median(walls[ti][2]));
+        const double q = median(walls[ti][0]), qc = median(cpus[ti][0]);
+        std::printf("ratio threads=%d ggx_dfg_over_karis_float=%.3f ggx_dfg_over_karis_double=%.3f "
+                    "cpu_ggx_dfg_over_karis_float=%.3f cpu_ggx_dfg_over_karis_double=%.3f\n",
+                    thread_counts[ti], q / median(walls[ti][1]), q / median(walls[ti][2]), qc / median(cpus[ti][1]),
+                    qc / median(cpus[ti][2]));
     }
 
     // Accuracy against the reference-quality table.
