@@ -154,13 +154,7 @@ TEST(ShaderWriter, LtcShaderMatrixUnpacksTheFittedInverseTheEvaluatorStores) {
             for (const double mu : {0.25, 0.9}) {
                 const double coords[2] = {r, mu};  // (roughness, cos_theta), the definition's order
                 const TexelValue v = p.evaluator->evaluate(coords, 0);
-                Mat3 m;
-                for (int e = 0; e < 9; ++e) {
-                    const std::string& el = def.shader_matrix[static_cast<std::size_t>(e)];
-                    const std::size_t letter = std::string("RGBA").find(el);
-                    m.m[static_cast<std::size_t>(e / 3)][static_cast<std::size_t>(e % 3)] =
-                        el.size() == 1 && letter != std::string::npos ? v.value[letter] : std::stod(el);
-                }
+                const Mat3 m = stored_ltc_inverse(def, v.value.data());
                 const Mat3 fit = fit_ggx_ltc(mu, alpha_from_perceptual(r), Visibility::height_correlated,
                                              ltc_fit_options(0)).minv.matrix();
                 ASSERT_GT(std::abs(m.m[1][1]), 0.0);

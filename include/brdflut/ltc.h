@@ -186,9 +186,16 @@ LtcTexelReport ltc_texel_report(double mu_o, double alpha, Visibility vis, const
 
 struct ExrImage;
 struct LutDescription;
+struct TableDefinition;
 
-// True for the tables whose channels are an LTC matrix (ltc_1, hdrp_ltc_ggx).
+// True for the tables whose channels are an LTC matrix (ltc_1, hdrp_ltc_ggx):
+// those whose shader lookup returns it (TableDefinition::shader_result).
 bool is_ltc_matrix_table(const std::string& id);
+
+// The stored inverse matrix of such a table from one texel's channels
+// (R, G, B, A), by the table's packing (TableDefinition::shader_matrix, the
+// same that the generated shader functions follow). Scaled as stored.
+Mat3 stored_ltc_inverse(const TableDefinition& def, const double* channels);
 
 struct LtcComparison {
     std::size_t texels = 0;

@@ -2,6 +2,7 @@
 // bank of polygon lights against the exact light, next to a refit's.
 #include <algorithm>
 
+#include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
@@ -11,7 +12,21 @@
 
 namespace brdflut {
 
-bool is_ltc_matrix_table(const std::string& id) { return id == "ltc_1" || id == "hdrp_ltc_ggx"; }
+bool is_ltc_matrix_table(const std::string& id) {
+    for (const TableDefinition& d : catalogue())
+        if (d.id == id) return d.shader_result == "ltc_inverse";
+    return false;
+}
+
+Mat3 stored_ltc_inverse(const TableDefinition& def, const double* channels) {
+    Mat3 m;
+    for (std::size_t e = 0; e < 9; ++e) {
+        const std::string& el = def.shader_matrix[e];
+        const std::size_t letter = std::string("RGBA").find(el);
+        m.m[e / 3][e % 3] = el.size() == 1 && letter != std::string::npos ? channels[letter] : std::stod(el);
+    }
+    return m;
+}
 
 namespace {
 double median(std::vector<double> v) {
@@ -51,10 +66,7 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         const double r = axes[static_cast<std::size_t>(ir)].value(pos[ir]);
         const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
         const double* p = &img.pixels[k * nc];
-        // Heitz: (m00, m02, m20, m22) of M^-1 / m11 in glm m[col][row] = (a, c, b, d);
-        // HDRP: (m00, m20, m11, m02) of M^-1 / m22 by rows.
-        const Mat3 minv = hdrp ? Mat3{{{{p[0], 0, p[3]}, {0, p[2], 0}, {p[1], 0, 1}}}}
-                               : LtcInverse{p[0], p[2], p[1], p[3]}.matrix();
+        const Mat3 minv = stored_ltc_inverse(*d.def, p);
         const double alpha = std::max(alpha_from_perceptual(r), hdrp ? 1e-3 : 0.0);  // as the table
         const LtcFit fit = fit_ggx_ltc(mu, alpha, vis);
         const LtcTexelReport stored = ltc_texel_report(mu, alpha, vis, minv, fit.n0);
