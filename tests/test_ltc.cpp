@@ -15,6 +15,10 @@
 #include "brdflut/ltc.h"
 #include "brdflut/quadrature.h"
 #include "brdflut/verify.h"
+#include "brdflut/exr.h"
+#include "brdflut/formats.h"
+#include "brdflut/lut.h"
+#include "test_support.h"
 
 namespace brdflut {
 namespace {
@@ -299,6 +303,33 @@ TEST(LtcTables, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
     EXPECT_NEAR(fe.at("relative_l3_max").get<double>(), l3, 1e-12);
     EXPECT_NEAR(fe.at("below_horizon_max").get<double>(), below, 1e-12);
     EXPECT_DOUBLE_EQ(fe.at("light_tolerance").get<double>(), 1e-4);
+}
+
+TEST(LtcCompare, AFileOfTheRefitLightsAsTheRefitAndATransposedOneDoesNot) {
+    // compare's integrated-light report reads each layout's matrices back:
+    // a file that holds the refit (in float) gives the refit's light error
+    // at every texel; with the off-diagonal elements of M^-1 swapped (the
+    // matrix transposed, the bug users report most) it is far worse.
+    test::TempDir dir;
+    for (const char* id : {"ltc_1", "hdrp_ltc_ggx"}) {
+        SCOPED_TRACE(id);
+        const TableDefinition& def = find_table(id);
+        TableSettings s = default_settings(def);
+        for (Axis& a : s.axes) a.count = 3;
+        const std::string path = dir / (std::string(id) + ".exr");
+        write_exr(path, generate(def, s), PixelType::float32);
+        ExrImage img = read_table_image(path);
+        const LutDescription d = describe_from_metadata(img, path);
+        const LtcComparison c = compare_ltc_light(img, d, 0);
+        ASSERT_EQ(c.texels, 9u);
+        EXPECT_EQ(c.refit_better, 0u);
+        for (std::size_t k = 0; k < c.texels; ++k) EXPECT_NEAR(c.stored_light[k], c.refit_light[k], 1e-5) << k;
+        // Heitz stores (m00, m02, m20, m22): swap G and B; HDRP (m00, m20, m11, m02): swap G and A.
+        const std::size_t a = 1, b = std::string(id) == "ltc_1" ? 2 : 3;
+        for (std::size_t k = 0; k < c.texels; ++k) std::swap(img.pixels[4 * k + a], img.pixels[4 * k + b]);
+        const LtcComparison t = compare_ltc_light(img, d, 0);
+        EXPECT_GT(t.stored_light_max, 2.0 * c.refit_light_max + 0.05);
+    }
 }
 
 TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
