@@ -17,6 +17,7 @@
 using namespace brdflut;
 using brdflut::test::run_cli;
 using brdflut::test::TempDir;
+using brdflut::test::image_of;
 
 namespace {
 
@@ -27,16 +28,6 @@ TableSettings small(const std::string& id, int n) {
     for (Axis& a : s.axes) a.count = n;
     s.quality = Quality::draft;
     return s;
-}
-
-// An image holding a table's values as stored (float), as read_exr returns.
-ExrImage image_of(const Table& t) {
-    ExrImage img;
-    img.width = t.width();
-    img.height = t.height();
-    for (int c = 0; c < t.channel_count(); ++c) img.channel_names.push_back(std::string(1, "RGBA"[c]));
-    for (double v : t.values) img.pixels.push_back(static_cast<float>(v));
-    return img;
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 using namespace brdflut;
 using brdflut::test::run_cli;
 using brdflut::test::TempDir;
+using brdflut::test::image_of;
 
 namespace {
 
@@ -80,16 +81,6 @@ Table make(const std::string& id, const std::string& args) {
         }
     }
     return generate(def, s);
-}
-
-// The image of a table's values as stored in a float file, without metadata.
-ExrImage image_of(const Table& t) {
-    ExrImage img;
-    img.width = t.width();
-    img.height = t.height();
-    for (int c = 0; c < t.channel_count(); ++c) img.channel_names.push_back(std::string(1, "RGBA"[c]));
-    for (double v : t.values) img.pixels.push_back(static_cast<float>(v));
-    return img;
 }
 
 bool has_finding(const Explanation& e, const std::string& words) {

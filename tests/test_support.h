@@ -1,4 +1,5 @@
-// Helpers shared by the tests: temporary folders and running the CLI.
+// Helpers shared by the tests: temporary folders, running the CLI, a table
+// as a file would hold it.
 #pragma once
 
 #include <cstdio>
@@ -9,7 +10,21 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "brdflut/exr.h"
+#include "brdflut/table.h"
+
 namespace brdflut::test {
+
+// The image of a table's values as stored in a float file, without
+// metadata, as read_exr returns it.
+inline ExrImage image_of(const Table& t) {
+    ExrImage img;
+    img.width = t.width();
+    img.height = t.height();
+    for (int c = 0; c < t.channel_count(); ++c) img.channel_names.push_back(std::string(1, "RGBA"[c]));
+    for (double v : t.values) img.pixels.push_back(static_cast<float>(v));
+    return img;
+}
 
 // A fresh folder under the system temporary directory, removed at scope exit.
 class TempDir {
