@@ -1,0 +1,66 @@
+// Directional and average albedos of the rough dielectric (GGX glass) of
+// Walter et al. 2007, "Microfacet Models for Refraction through Rough
+// Surfaces": GGX normals, the exact unpolarized dielectric Fresnel F (1 under
+// total internal reflection) and Smith shadowing-masking G2 (height
+// correlated 1 / (1 + Lambda(o) + Lambda(i)) by default, or separable
+// G1(o) G1(i); Lambda of the transmitted direction is taken of |cos|).
+//
+// The view direction wo lies on the near side of an interface of relative
+// index eta (the far side's index over the near side's): eta = n > 1 seen
+// from outside, eta = 1/n from inside the denser medium. With wo fixed and
+// the integral taken over the other direction wi:
+//
+//   E_R(mu_o) = integral over the near hemisphere of f_r |cos(theta_i)| dw_i
+//             = integral of F(wo.h) D(h) G2 (wo.h) / mu_o dw_h
+//   E_T(mu_o) = integral over the far hemisphere of f_t |cos(theta_i)| dw_i
+//             = integral of (1 - F(wo.h)) D(h) G2 (wo.h) / mu_o dw_h
+//
+// with Walter's eta_o^2 factor in f_t: E_T is the fraction of the energy
+// arriving along wo that crosses the interface (the smooth limit of E_R + E_T
+// is F + (1 - F) = 1 on both sides). A renderer that carries radiance across
+// the interface instead multiplies E_T by 1 / eta^2. A direction reflected
+// or refracted about h that lands on the wrong side of the macro surface
+// (wi below the horizon for reflection, above it for transmission)
+// contributes nothing; microfacets facing away from wo (wo.h <= 0) are not
+// seen. Averages: E_avg = 2 * integral of E(mu) mu dmu over [0, 1].
+//
+// With eta = 1 there is no Fresnel reflection (E_R = 0) but the model still
+// masks the straight-through path twice: E_T = G2(wo, -wo) (1 + Lambda(wo)),
+// which is 1 only for alpha = 0. The tables evaluate the model as it is.
+#pragma once
+
+#include <cstdint>
+
+#include "brdflut/microfacet.h"
+#include "brdflut/quadrature.h"
+
+namespace brdflut {
+
+// Default absolute tolerance of the functions below.
+inline constexpr double kGlassAbsTolerance = 1e-9;
+// Absolute tolerance of the glass quadrature tables: with the honest error
+// estimate and float rounding (at most 6e-8 below 1) every stored value is
+// within 1e-7 of the exact integral.
+inline constexpr double kGlassTableTolerance = 2e-8;
+
+// Deterministic quadrature over the half vector. value = {E_R, E_T}, error =
+// the estimated absolute error of each. mu_o in [0, 1] (0 is taken at
+// 1e-16, the grazing limit), alpha >= 0 (0: the smooth interface, F and
+// 1 - F), eta > 0.
+Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis,
+                      double abs_tol = kGlassAbsTolerance);
+
+// {E_R avg, E_T avg}: 2 * integral of E(mu) mu dmu, by quadrature.
+Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis,
+                              double abs_tol = kGlassAbsTolerance);
+
+// Monte Carlo estimates by visible-normal sampling (Heitz 2018), both
+// channels from each sampled normal: value = the mean, error = its standard
+// error. Reproducible for a given seed.
+Estimate<2> ggx_glass_mc(double mu_o, double alpha, double eta, Visibility vis, long long samples,
+                         std::uint64_t seed);
+// The averages by sampling mu with density 2 mu, then one visible normal per mu.
+Estimate<2> ggx_glass_average_mc(double alpha, double eta, Visibility vis, long long samples,
+                                 std::uint64_t seed);
+
+}  // namespace brdflut

@@ -1,0 +1,309 @@
+// Quadrature of the GGX dielectric albedos E_R and E_T (see glass_integrals.h).
+//
+// Over the half vector h at t = tan(theta_h), azimuth phi (wo at phi = 0),
+// with x = ln(t / alpha) the measure D cos(theta_h) dw_h is
+// (1/2) sech^2(x) dx dphi / (2 pi), and both albedos are integrals of
+//   {F(c), 1 - F(c)} G2 c / (mu_o cos(theta_h)),   c = wo.h = a1 cos(phi) + a0,
+// a1 = sin(theta_o) sin(theta_h), a0 = mu_o cos(theta_h). On a ring of fixed
+// t, c falls monotonically from a0 + a1 (phi = 0) to a0 - a1 (phi = pi), and
+// every boundary of the integrand is a threshold on c:
+//   reflection      mu_i = 2 c cos(theta_h) - mu_o > 0   <=>  c > mu_o / (2 cos(theta_h))
+//   transmission    the refracted direction
+//                     wt = -wo / eta + (c / eta - cos_t) h,   cos_t = sqrt(1 - (1 - c^2) / eta^2),
+//                   has mu_t = -mu_o / eta + (c / eta - cos_t) cos(theta_h). For eta >= 1
+//                   c / eta < cos_t, so mu_t < 0 for every c > 0. For eta < 1, with
+//                   k = 1 - eta^2 and s = mu_o / cos(theta_h), refraction needs
+//                   c >= sqrt(k) (else total internal reflection, F = 1), and
+//                   mu_t < 0 <=> c - sqrt(c^2 - k) < s, the left side decreasing in
+//                   c: every refracting c when s >= sqrt(k), else c > c*(s) =
+//                   (s^2 + k) / (2 s).
+//   Fresnel         F has a square-root kink at the critical c = sqrt(k).
+// So the phi integral at fixed t is split at the azimuths of those
+// thresholds (acos of (c - a0) / a1) into pieces on which both channels are
+// smooth, each done by adaptive Gauss-Kronrod (7, 15) in u with
+// phi = p0 + (p1 - p0)(3u^2 - 2u^3), which turns a square-root end into an
+// analytic one. The outer integral in x is split where a threshold meets
+// the ends of the ring (phi = 0 or pi), found in closed form:
+//   reflection      t_a = mu_o / (1 + sin_o), t_b = (1 + sin_o) / mu_o
+//   c = 0           t = mu_o / sin_o
+//   critical c      theta_h = theta_o + theta_c, theta_o - theta_c, theta_c - theta_o
+//                   (theta_c = acos(sqrt(k)))
+//   c*              theta_h = atan((sin_o - eta) / mu_o) (the in-plane ray refracted
+//                   exactly to the horizon, when sin_o > eta)
+//   c* = sqrt(k)    cos(theta_h) = mu_o / sqrt(k)
+// and each piece is integrated by adaptive Gauss-Kronrod (15, 31) under the
+// same smoothstep map, from panels of at most 3 units of x. Each inner
+// integral gets the tolerance its outer weight requires, and its error
+// estimate is integrated with the values, so the reported error covers both
+// levels.
+#include "brdflut/glass_integrals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "brdflut/fresnel.h"
+
+namespace brdflut {
+namespace {
+
+constexpr double kGrazingMu = 1e-16;
+// The x range: below kLowX the weight left is below 1e-17 (integrand <= 1 there);
+// above kHighX below 1e-15 against an integrand growing like e^x.
+constexpr double kLowX = -20.0;
+constexpr double kHighX = 36.0;
+constexpr double kPanelWidth = 3.0;
+// The loosest tolerance of a ring integral, relative to its integrand's size.
+constexpr double kMaxInnerRel = 1e-6;
+// The loosest tolerance of an E(mu) inside an average.
+constexpr double kMaxNestedTol = 1e-5;
+
+double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
+double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
+
+struct Ring {
+    double a1, a0;  // c = a1 cos(phi) + a0
+    double cos_h;
+    double scale;   // 1 / (mu_o cos(theta_h))
+};
+
+struct GlassIntegrand {
+    Ggx ggx;
+    Visibility vis;
+    double mu_o, sin_o, eta;
+    double k;       // 1 - eta^2 (> 0: total internal reflection possible)
+    double c_crit;  // sqrt(k), or 0
+
+    GlassIntegrand(double alpha, Visibility v, double mu, double e)
+        : ggx{alpha}, vis(v), mu_o(mu), sin_o(safe_sqrt(1.0 - mu * mu)), eta(e), k(1.0 - e * e),
+          c_crit(e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0) {}
+
+    Ring ring(double t) const {
+        const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
+        const double sin_h = t * cos_h;
+        return {sin_o * sin_h, mu_o * cos_h, cos_h, 1.0 / (mu_o * cos_h)};
+    }
+
+    // {E_R, E_T} integrand at c = wo.h, per unit of the measure D cos(theta_h) dw_h.
+    std::array<double, 2> at_c(const Ring& q, double c) const {
+        std::array<double, 2> y{0.0, 0.0};
+        if (!(c > 0.0)) return y;
+        const double ct2 = 1.0 - (1.0 - c * c) / (eta * eta);
+        double F = 1.0, T = 0.0, cos_t = 0.0;
+        if (ct2 > 0.0) {
+            cos_t = std::sqrt(ct2);
+            const double s_den = c + eta * cos_t, p_den = eta * c + cos_t;
+            const double rs = (c - eta * cos_t) / s_den, rp = (eta * c - cos_t) / p_den;
+            F = 0.5 * (rs * rs + rp * rp);
+            // 1 - F without cancellation: 1 - r^2 = 4 eta c cos_t / den^2.
+            T = 2.0 * eta * c * cos_t * (1.0 / (s_den * s_den) + 1.0 / (p_den * p_den));
+        }
+        const double w = c * q.scale;
+        const double mu_r = 2.0 * c * q.cos_h - mu_o;
+        if (mu_r > 0.0) y[0] = F * ggx.G2(mu_o, mu_r, vis) * w;
+        if (T > 0.0) {
+            const double mu_t = -mu_o / eta + (c / eta - cos_t) * q.cos_h;
+            if (mu_t < 0.0) y[1] = T * ggx.G2(mu_o, -mu_t, vis) * w;
+        }
+        return y;
+    }
+
+    // The lower threshold of c for transmission at this ring (see above).
+    double transmission_c_min(const Ring& q) const {
+        if (!(k > 0.0)) return 0.0;
+        const double s = mu_o / q.cos_h;
+        if (s >= c_crit) return c_crit;
+        return (s * s + k) / (2.0 * s);
+    }
+};
+
+// Integral over phi in [0, pi] at fixed t: {E_R, E_T, error estimate}.
+std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double tol, int* evals) {
+    const Ring q = f.ring(t);
+    std::array<double, 3> out{};
+    const double c_max = q.a0 + q.a1, c_min = q.a0 - q.a1;
+    const double c_r = f.mu_o / (2.0 * q.cos_h);
+    const double c_t = f.transmission_c_min(q);
+    if (q.a1 <= 0.0) {  // normal view or t = 0: the ring has one value of c
+        const std::array<double, 2> y = f.at_c(q, q.a0);
+        return {kPi * y[0], kPi * y[1], 0.0};
+    }
+    const double lo = std::max(c_min, std::min(c_r, c_t));
+    if (!(lo < c_max)) return out;
+    // Thresholds inside (lo, c_max) as cos(phi) = (c - a0) / a1, descending
+    // (pieces in phi ascending). The ends of the ring are exactly cos(phi) =
+    // +-1, and the reflection threshold is written without the cancellation
+    // of c_r - a0: (c_r - a0) / a1 = -mu_o (1 - t^2) / (2 t sin_o).
+    std::array<double, 6> cs{};
+    int n = 0;
+    cs[n++] = 1.0;
+    const double cos_r = std::clamp(-f.mu_o * (1.0 - t * t) / (2.0 * t * f.sin_o), -1.0, 1.0);
+    auto cos_phi = [&](double c) {
+        if (c == c_r) return cos_r;
+        return std::clamp((c - q.a0) / q.a1, -1.0, 1.0);
+    };
+    for (double b : {c_r, c_t, f.c_crit})
+        if (b > lo && b < c_max) cs[n++] = cos_phi(b);
+    cs[n++] = lo == c_min ? -1.0 : cos_phi(lo);
+    for (int i = 1; i < n; ++i)  // insertion sort, descending
+        for (int j = i; j > 0 && cs[static_cast<std::size_t>(j)] > cs[static_cast<std::size_t>(j) - 1]; --j)
+            std::swap(cs[static_cast<std::size_t>(j)], cs[static_cast<std::size_t>(j) - 1]);
+    auto phi_of = [](double cp) { return cp >= 1.0 ? 0.0 : cp <= -1.0 ? kPi : std::acos(cp); };
+    AdaptiveOptions opt;
+    opt.abs_tol = tol / (n - 1);
+    opt.controlled = 2;
+    opt.max_intervals = 400;
+    double p0 = phi_of(cs[0]);
+    for (int j = 1; j < n; ++j) {
+        const double p1 = phi_of(cs[j]);
+        const double len = p1 - p0;
+        if (len > 0.0) {
+            const Estimate<2> e = integrate_adaptive<2>(
+                [&](double u) {
+                    const double phi = p0 + len * smoothstep(u);
+                    const double jac = len * smoothstep_slope(u);
+                    const double c = q.a1 * std::cos(phi) + q.a0;
+                    std::array<double, 2> y = f.at_c(q, c);
+                    y[0] *= jac;
+                    y[1] *= jac;
+                    return y;
+                },
+                0.0, 1.0, opt);
+            out[0] += e.value[0];
+            out[1] += e.value[1];
+            out[2] += e.error[0] + e.error[1];
+            *evals += e.evaluations;
+        }
+        p0 = p1;
+    }
+    return out;
+}
+
+// The break points of the outer integral in t = tan(theta_h).
+std::vector<double> outer_breaks(const GlassIntegrand& f) {
+    std::vector<double> ts;
+    const double mu_o = f.mu_o, sin_o = f.sin_o;
+    if (sin_o <= 0.0) {
+        ts.push_back(1.0);  // reflection: mu_i > 0 <=> t < 1 at normal view
+    } else {
+        ts.push_back(mu_o / (1.0 + sin_o));
+        ts.push_back((1.0 + sin_o) / mu_o);
+        ts.push_back(mu_o / sin_o);
+    }
+    const double theta_o = std::atan2(sin_o, mu_o);
+    auto add_theta = [&](double th) {
+        if (th > 0.0 && th < 0.5 * kPi) ts.push_back(std::tan(th));
+    };
+    if (f.k > 0.0) {
+        const double theta_c = std::acos(f.c_crit);
+        add_theta(theta_o + theta_c);
+        add_theta(theta_o - theta_c);
+        add_theta(theta_c - theta_o);
+        if (sin_o > f.eta) add_theta(std::atan((sin_o - f.eta) / mu_o));
+        if (mu_o < f.c_crit) add_theta(std::acos(mu_o / f.c_crit));
+    }
+    return ts;
+}
+
+// The smooth interface (alpha = 0): {F(mu), 1 - F(mu)}.
+Estimate<2> smooth_limit(double mu_o, double eta) {
+    Estimate<2> out;
+    const double F = fresnel_dielectric(std::min(mu_o, 1.0), eta);
+    out.value = {F, 1.0 - F};
+    return out;
+}
+
+}  // namespace
+
+Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, double abs_tol) {
+    Estimate<2> out;
+    if (!(mu_o >= 0.0) || !(eta > 0.0)) return out;
+    mu_o = std::clamp(mu_o, kGrazingMu, 1.0);
+    if (!(alpha > 0.0)) return smooth_limit(mu_o, eta);
+    const GlassIntegrand f(alpha, vis, mu_o, eta);
+    const double ln_alpha = std::log(alpha);
+
+    std::vector<double> xs{kLowX, kHighX};
+    for (double t : outer_breaks(f)) {
+        const double x = std::log(t) - ln_alpha;
+        if (x > kLowX && x < kHighX) xs.push_back(x);
+    }
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    const int segments = static_cast<int>(xs.size()) - 1;
+
+    // Error budget per segment: 0.6 abs_tol for the outer rule and 0.3 abs_tol
+    // for the inner integrals it accumulates, shared among the segments.
+    AdaptiveOptions outer_opt;
+    outer_opt.abs_tol = 0.6 * abs_tol / segments;
+    outer_opt.controlled = 2;
+    outer_opt.rule = KronrodRule::k31;
+    outer_opt.max_intervals = 400;
+    const double inner_budget = 0.3 * abs_tol / segments;
+
+    for (int s = 0; s < segments; ++s) {
+        const double x0 = xs[static_cast<std::size_t>(s)], len = xs[static_cast<std::size_t>(s) + 1] - x0;
+        const int panels = std::max(1, static_cast<int>(std::ceil(len / kPanelWidth)));
+        int inner_evals = 0;
+        const Estimate<3> e = integrate_adaptive_panels<3>(
+            [&](double u) -> std::array<double, 3> {
+                const double x = x0 + len * smoothstep(u);
+                const double ch = std::cosh(x);
+                // (1/2) sech^2(x) / pi: phi is integrated over [0, pi] only.
+                const double w = 0.5 / (ch * ch) * kInvPi * len * smoothstep_slope(u);
+                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
+                const double t = alpha * std::exp(x);
+                const double size = kPi * std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
+                const double tol = std::min(kMaxInnerRel * size, inner_budget / w);
+                std::array<double, 3> r = ring_integral(f, t, tol, &inner_evals);
+                for (double& v : r) v *= w;
+                return r;
+            },
+            0.0, 1.0, panels, outer_opt);
+        for (int c = 0; c < 2; ++c) {
+            out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
+            out.error[static_cast<std::size_t>(c)] += e.error[static_cast<std::size_t>(c)] + e.value[2];
+        }
+        out.evaluations += e.evaluations + inner_evals;
+    }
+    return out;
+}
+
+Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
+    Estimate<2> out;
+    if (!(eta > 0.0)) return out;
+    // Break points of E(mu): alpha (where G1(mu) falls off) and the critical
+    // cosine sqrt(1 - eta^2) (total internal reflection below it when eta < 1).
+    std::vector<double> mus{0.0, 1.0};
+    if (alpha > 0.0 && alpha < 1.0) mus.push_back(alpha);
+    if (eta < 1.0) mus.push_back(std::sqrt(1.0 - eta * eta));
+    std::sort(mus.begin(), mus.end());
+    mus.erase(std::unique(mus.begin(), mus.end()), mus.end());
+    const int segments = static_cast<int>(mus.size()) - 1;
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.5 * abs_tol / segments;
+    opt.controlled = 2;
+    opt.max_intervals = 400;
+    const double budget = 0.4 * abs_tol / segments;
+    for (int s = 0; s < segments; ++s) {
+        const double m0 = mus[static_cast<std::size_t>(s)], len = mus[static_cast<std::size_t>(s) + 1] - m0;
+        const Estimate<3> e = integrate_adaptive<3>(
+            [&](double u) -> std::array<double, 3> {
+                const double mu = m0 + len * smoothstep(u);
+                const double w = 2.0 * mu * len * smoothstep_slope(u);
+                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
+                const double tol = std::min(kMaxNestedTol, budget / w);
+                const Estimate<2> d = alpha > 0.0 ? ggx_glass(mu, alpha, eta, vis, tol) : smooth_limit(mu, eta);
+                return {w * d.value[0], w * d.value[1], w * (d.error[0] + d.error[1])};
+            },
+            0.0, 1.0, opt);
+        for (int c = 0; c < 2; ++c) {
+            out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
+            out.error[static_cast<std::size_t>(c)] += e.error[static_cast<std::size_t>(c)] + e.value[2];
+        }
+        out.evaluations += e.evaluations;
+    }
+    return out;
+}
+
+}  // namespace brdflut
