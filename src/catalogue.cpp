@@ -18,6 +18,7 @@ const std::vector<TableDefinition>& catalogue() {
         register_disney_tables(v);
         register_oren_nayar_tables(v);
         register_sheen_tables(v);
+        register_glass_tables(v);
         register_preset_tables(v);
         register_ltc_tables(v);
         return v;

@@ -223,6 +223,71 @@ TEST(Dds, OneAxisTableIsATwoDimensionalTextureOfHeightOne) {
     expect_texels(b, 148, t, PixelType::float32, 1);
 }
 
+// A 3-axis table: 4 x 3 x 2 texels, x fastest, then y, then z.
+Table make_volume(int channels) {
+    Table t = make_table(channels, 4, 3, "fmt_volume");
+    t.axes.push_back(Axis{"ior", 1.0, 3.0, 2, Placement::center, Warp::linear});
+    t.values.clear();
+    t.errors.clear();
+    const std::size_t n = t.texel_count() * static_cast<std::size_t>(channels);
+    for (std::size_t i = 0; i < n; ++i) {
+        t.values.push_back(std::fmod(0.1 + 0.37 * static_cast<double>(i) / 3.0, 1.0));
+        t.errors.push_back(1e-9);
+    }
+    return t;
+}
+
+TEST(Dds, ThreeAxisTableIsAVolumeTextureWithItsSlicesInOrder) {
+    TempDir dir;
+    const Table t = make_volume(3);
+    write_table(dir / "v.dds", t, PixelType::half, Format::dds);
+    const std::string b = read_file(dir / "v.dds");
+    ASSERT_EQ(b.size(), 4u + 124u + 20u + 4u * 3u * 2u * 8u);
+    EXPECT_EQ(u32(b, 8), 0x1u | 0x2u | 0x4u | 0x8u | 0x1000u | 0x20000u | 0x800000u);  // ... | DDSD_DEPTH
+    EXPECT_EQ(u32(b, 12), 3u);                                    // dwHeight: the second axis
+    EXPECT_EQ(u32(b, 16), 4u);                                    // dwWidth
+    EXPECT_EQ(u32(b, 20), 4u * 8u);                               // pitch of one row
+    EXPECT_EQ(u32(b, 24), 2u);                                    // dwDepth: the third axis
+    EXPECT_EQ(u32(b, 108), 0x1000u | 0x8u);                       // DDSCAPS_TEXTURE | DDSCAPS_COMPLEX
+    EXPECT_EQ(u32(b, 112), 0x200000u);                            // DDSCAPS2_VOLUME
+    EXPECT_EQ(u32(b, 132), 4u);                                   // TEXTURE3D
+    EXPECT_EQ(u32(b, 140), 1u);                                   // arraySize
+    expect_texels(b, 148, t, PixelType::half, 4);
+}
+
+TEST(Ktx2, ThreeAxisTableIsAThreeDimensionalTexture) {
+    TempDir dir;
+    const Table t = make_volume(1);
+    write_table(dir / "v.ktx2", t, PixelType::float32, Format::ktx2);
+    const std::string b = read_file(dir / "v.ktx2");
+    ASSERT_GE(b.size(), 104u);
+    EXPECT_EQ(u32(b, 20), 4u);  // pixelWidth
+    EXPECT_EQ(u32(b, 24), 3u);  // pixelHeight: the second axis
+    EXPECT_EQ(u32(b, 28), 2u);  // pixelDepth: the third axis
+    EXPECT_EQ(u32(b, 32), 0u);  // layerCount
+    EXPECT_EQ(u32(b, 40), 1u);  // levelCount
+    const std::uint64_t level_offset = u64(b, 80), level_length = u64(b, 88);
+    EXPECT_EQ(level_length, 4u * 3u * 2u * 4u);
+    ASSERT_EQ(b.size(), level_offset + level_length);
+    expect_texels(b, static_cast<std::size_t>(level_offset), t, PixelType::float32, 1);
+}
+
+TEST(CppHeader, ThreeAxisTableHasADepthAndSliceMajorData) {
+    TempDir dir;
+    const Table t = make_volume(2);
+    write_table(dir / "v.h", t, PixelType::float32, Format::cpp);
+    const std::string h = read_file(dir / "v.h");
+    EXPECT_NE(h.find("inline constexpr int width = 4;"), std::string::npos);
+    EXPECT_NE(h.find("inline constexpr int height = 3;"), std::string::npos);
+    EXPECT_NE(h.find("inline constexpr int depth = 2;"), std::string::npos);
+    EXPECT_NE(h.find("data[width * height * depth * channels]"), std::string::npos);
+    // A 2-axis table has depth 1.
+    write_table(dir / "p.h", make_table(1, 5, 3), PixelType::float32, Format::cpp);
+    const std::string p = read_file(dir / "p.h");
+    EXPECT_NE(p.find("inline constexpr int height = 3;"), std::string::npos);
+    EXPECT_NE(p.find("inline constexpr int depth = 1;"), std::string::npos);
+}
+
 // ---------------------------------------------------------------- KTX2
 
 namespace {

@@ -63,9 +63,10 @@ void write_cpp_header(const std::string& path, const Table& table, PixelType pix
       << ". Do not edit.\n"
       << "// Needs C++17 (inline variables, nested namespace definition).\n"
       << "//\n"
-      << "// data: width * height texels, row-major, row 0 first: x (the first axis)\n"
-      << "// varies fastest, rows are the second axis (third-axis slices stacked);\n"
-      << "// `channels` values per texel, interleaved.\n";
+      << "// data: width * height * depth texels, row-major, row 0 first: x (the first\n"
+      << "// axis) varies fastest, then the second axis (height rows), then the third\n"
+      << "// (depth slices; 1 for tables of fewer axes): texel (x, y, z) at\n"
+      << "// (z * height + y) * width + x, `channels` values per texel, interleaved.\n";
     if (half)
       h << "// Values are IEEE 754 binary16 (half) bit patterns.\n";
     else
@@ -75,9 +76,10 @@ void write_cpp_header(const std::string& path, const Table& table, PixelType pix
     if (half) h << "#include <cstdint>\n\n";
     h << "namespace " << ns << " {\n\n"
       << "inline constexpr int width = " << table.width() << ";\n"
-      << "inline constexpr int height = " << table.height() << ";\n"
+      << "inline constexpr int height = " << (table.axes.size() > 1 ? table.axes[1].count : 1) << ";\n"
+      << "inline constexpr int depth = " << (table.axes.size() > 2 ? table.axes[2].count : 1) << ";\n"
       << "inline constexpr int channels = " << table.channel_count() << ";\n\n"
-      << "inline constexpr " << (half ? "std::uint16_t" : "float") << " data[width * height * channels] = {";
+      << "inline constexpr " << (half ? "std::uint16_t" : "float") << " data[width * height * depth * channels] = {";
     for (std::size_t i = 0; i < table.values.size(); ++i) {
         h << (i % 8 == 0 ? "\n    " : " ");
         const float f = static_cast<float>(table.values[i]);

@@ -1,4 +1,5 @@
-// KTX 2.0 output: one uncompressed 2-D level of a 16- or 32-bit float format.
+// KTX 2.0 output: one uncompressed 2-D (or, for three axes, 3-D) level of a
+// 16- or 32-bit float format.
 //
 // Layout (KTX File Format Specification 2.0, section "File Structure"):
 //   identifier (12 bytes); header: vkFormat, typeSize, pixelWidth,
@@ -101,8 +102,11 @@ void write_ktx2(const std::string& path, const Table& table, PixelType pixel) {
     out.u32(static_cast<std::uint32_t>(table.width()));    // pixelWidth
     // pixelHeight: a 2-D texture also for one-axis tables (height 1), as the
     // dds and exr files are; pixelHeight 0 would make it a 1-D texture.
-    out.u32(static_cast<std::uint32_t>(table.height()));
-    out.u32(0);  // pixelDepth: not a 3-D texture (z slices are stacked rows)
+    // A table with three axes is a 3-D texture: pixelHeight y, pixelDepth z,
+    // the slices one after another in the level (the same bytes as stacked rows).
+    const bool volume = table.axes.size() == 3;
+    out.u32(static_cast<std::uint32_t>(volume ? table.axes[1].count : table.height()));
+    out.u32(volume ? static_cast<std::uint32_t>(table.axes[2].count) : 0u);  // pixelDepth
     out.u32(0);  // layerCount: not an array
     out.u32(1);  // faceCount
     out.u32(1);  // levelCount: the base level only, no mipmaps to generate

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "brdflut/ggx_integrals.h"
+#include "brdflut/glass_integrals.h"
 #include "brdflut/lobe_integrals.h"
 #include "brdflut/random.h"
 #include "brdflut/sheen_integrals.h"
@@ -26,6 +27,10 @@ enum class Kind {
     cycles_ggx_e_avg,  // (alpha): R = E_avg
     split_sum,         // (mu, r): R = A, G = B, height-correlated (glTF, Godot)
     gltf_charlie,      // (mu, r): R = G = 0, B = Charlie cloth E
+    cycles_glass_e,    // (alpha, mu, n): R = E_R + E_T at eta = n
+    cycles_glass_inv_e,      // the same at eta = 1/n
+    cycles_glass_e_avg,      // (alpha, n): R = E_R avg + E_T avg at eta = n
+    cycles_glass_inv_e_avg,  // the same at eta = 1/n
 };
 
 class PresetEvaluator final : public TexelEvaluator {
@@ -81,6 +86,26 @@ public:
                 out.value[0] = e.value[0];
                 out.error[0] = scale() * e.error[0];
                 out.evaluations = e.evaluations;
+                break;
+            }
+            case Kind::cycles_glass_e:
+            case Kind::cycles_glass_inv_e: {
+                const double eta = kind_ == Kind::cycles_glass_e ? c[2] : 1.0 / c[2];
+                Estimate<2> e = mc_ ? ggx_glass_mc(c[1], c[0], eta, Visibility::height_correlated, samples_, seed)
+                                    : ggx_glass(c[1], c[0], eta, Visibility::height_correlated,
+                                                tolerance(kGlassTableTolerance));
+                out.value[0] = e.value[0] + e.value[1];
+                out.error[0] = scale() * (e.error[0] + e.error[1]);
+                break;
+            }
+            case Kind::cycles_glass_e_avg:
+            case Kind::cycles_glass_inv_e_avg: {
+                const double eta = kind_ == Kind::cycles_glass_e_avg ? c[1] : 1.0 / c[1];
+                Estimate<2> e = mc_ ? ggx_glass_average_mc(c[0], eta, Visibility::height_correlated, samples_, seed)
+                                    : ggx_glass_average(c[0], eta, Visibility::height_correlated,
+                                                        tolerance(kGlassTableTolerance));
+                out.value[0] = e.value[0] + e.value[1];
+                out.error[0] = scale() * (e.error[0] + e.error[1]);
                 break;
             }
             case Kind::gltf_charlie: {
@@ -143,6 +168,32 @@ AxisSpec alpha_sqrt_linear(int count) {
     return a;
 }
 
+// Cycles' glass axes (cycles_precompute.cpp): rough = sqrt(alpha) = x/(nx - 1)
+// clamped to [1e-4, 1], mu = y/(ny - 1) clamped to [1e-4, 1], z = i/(nz - 1)
+// clamped to [1e-4, 0.99] with n = (1 + z^2)/(1 - z^2).
+AxisSpec cycles_rough(int count) {
+    AxisSpec a = alpha_sqrt_linear(count);
+    a.axis.clamp_lo = 1e-8;  // rough 1e-4
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+AxisSpec cycles_mu(int count) {
+    AxisSpec a = cos_theta(count, Placement::endpoints);
+    a.axis.clamp_lo = 1e-4;
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+double ior_of_z(double z) { return (1.0 + z * z) / (1.0 - z * z); }
+AxisSpec cycles_ior(int count) {
+    AxisSpec a = tables::ior_axis(count);
+    a.axis.placement = Placement::endpoints;
+    a.axis.min = 1.0;
+    a.axis.max = HUGE_VAL;  // z = 1
+    a.axis.clamp_lo = ior_of_z(1e-4);
+    a.axis.clamp_hi = ior_of_z(0.99);
+    return a;
+}
+
 nlohmann::json ggx_model(Visibility vis) {
     return {{"brdf", "GGX microfacet, single scattering"},
             {"distribution", "ggx"},
@@ -153,6 +204,7 @@ nlohmann::json ggx_model(Visibility vis) {
 
 const char* kQuadratureRule =
     "per channel the rule of the matching core table: ggx_dfg (split sums), ggx_albedo_avg, "
+    "ggx_glass_albedo and ggx_glass_albedo_avg (glass), "
     "disney_diffuse_albedo, sheen_charlie_albedo; error per value: that rule's estimate";
 
 struct Entry {
@@ -175,7 +227,9 @@ TableDefinition make(Entry e) {
     model["preset"] = e.preset;
     model["engine_source"] = e.engine_source;
     const Kind kind = e.kind;
-    d.prepare = [kind, model](const TableSettings& s) {
+    const bool glass = kind == Kind::cycles_glass_e || kind == Kind::cycles_glass_inv_e ||
+                       kind == Kind::cycles_glass_e_avg || kind == Kind::cycles_glass_inv_e_avg;
+    d.prepare = [kind, model, glass](const TableSettings& s) {
         PreparedTable p;
         p.evaluator = std::make_unique<PresetEvaluator>(kind, s);
         p.model = model;
@@ -184,7 +238,8 @@ TableDefinition make(Entry e) {
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
                                                     "mixture (sheen_*)", s)
                        : tables::quadrature_method(kQuadratureRule,
-                                                   tables::quadrature_tolerances(kGgxAbsTolerance).at(s.quality));
+                                                   tables::quadrature_tolerances(glass ? kGlassTableTolerance : kGgxAbsTolerance)
+                                                       .at(s.quality));
         return p;
     };
     return d;
@@ -200,7 +255,9 @@ const std::vector<Preset>& presets() {
          PixelType::float32},
         {"hdrp", "Unity HDRP's PreIntegratedFGD: 64x64, x = sqrt(NdotV), end points, GGX and Disney diffuse",
          PixelType::half},
-        {"cycles", "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points) and table_ggx_Eavg",
+        {"cycles",
+         "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points), table_ggx_Eavg and the "
+         "four rough glass tables (16^3 and 16^2, z = sqrt((n-1)/(n+1)))",
          PixelType::float32},
         {"gltf", "glTF-IBL-Sampler's LUTs: GGX split sum (RG) and Charlie (B), cell centres, 128x128 here",
          PixelType::half},
@@ -259,6 +316,29 @@ void register_preset_tables(std::vector<TableDefinition>& out) {
                         "Cycles table_ggx_Eavg: GGX average albedo, x = sqrt(alpha), end points",
                         "blender/blender intern/cycles/app/cycles_precompute.cpp, intern/cycles/scene/shader.tables",
                         {alpha_sqrt_linear(32)}, {"E_avg: 2 * integral of E(mu) mu dmu"}, cycles_model}));
+    nlohmann::json glass_model = tables::glass_model(Visibility::height_correlated, false);
+    glass_model.erase("side");
+    glass_model["side"] = "ggx_glass_E: eta = n; ggx_glass_inv_E: eta = 1/n";
+    const char* cycles_source =
+        "blender/blender intern/cycles/app/cycles_precompute.cpp (precompute_ggx_glass_E), "
+        "intern/cycles/scene/shader.tables, kernel/closure/bsdf_microfacet.h "
+        "(microfacet_ggx_preserve_energy)";
+    out.push_back(make({Kind::cycles_glass_e, "cycles", "cycles_ggx_glass_e",
+                        "Cycles table_ggx_glass_E: E_R + E_T at eta = n, x = sqrt(alpha), y = mu, z = sqrt((n-1)/(n+1))",
+                        cycles_source, {cycles_rough(16), cycles_mu(16), cycles_ior(16)},
+                        {"E: E_R + E_T, integral of f cos over both hemispheres (energy)"}, glass_model}));
+    out.push_back(make({Kind::cycles_glass_e_avg, "cycles", "cycles_ggx_glass_e_avg",
+                        "Cycles table_ggx_glass_Eavg: average of E_R + E_T at eta = n over (sqrt(alpha), z)",
+                        cycles_source, {cycles_rough(16), cycles_ior(16)},
+                        {"E_avg: 2 * integral of (E_R + E_T)(mu) mu dmu"}, glass_model}));
+    out.push_back(make({Kind::cycles_glass_inv_e, "cycles", "cycles_ggx_glass_inv_e",
+                        "Cycles table_ggx_glass_inv_E: E_R + E_T at eta = 1/n, x = sqrt(alpha), y = mu, z",
+                        cycles_source, {cycles_rough(16), cycles_mu(16), cycles_ior(16)},
+                        {"E: E_R + E_T at eta = 1/n (energy)"}, glass_model}));
+    out.push_back(make({Kind::cycles_glass_inv_e_avg, "cycles", "cycles_ggx_glass_inv_e_avg",
+                        "Cycles table_ggx_glass_inv_Eavg: average of E_R + E_T at eta = 1/n over (sqrt(alpha), z)",
+                        cycles_source, {cycles_rough(16), cycles_ior(16)},
+                        {"E_avg: 2 * integral of (E_R + E_T)(mu) mu dmu at eta = 1/n"}, glass_model}));
     out.push_back(make({Kind::split_sum, "gltf", "gltf_ggx",
                         "glTF-IBL-Sampler lut_ggx: specular = F0 * R + G",
                         "KhronosGroup/glTF-IBL-Sampler lib/source/shaders/filter.frag (LUT)",

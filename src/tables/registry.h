@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "brdflut/catalogue.h"
+#include "brdflut/microfacet.h"
 
 namespace brdflut {
 
@@ -13,6 +14,7 @@ void register_dipole_tables(std::vector<TableDefinition>& out);
 void register_disney_tables(std::vector<TableDefinition>& out);
 void register_oren_nayar_tables(std::vector<TableDefinition>& out);
 void register_sheen_tables(std::vector<TableDefinition>& out);
+void register_glass_tables(std::vector<TableDefinition>& out);
 void register_preset_tables(std::vector<TableDefinition>& out);
 void register_ltc_tables(std::vector<TableDefinition>& out);
 
@@ -41,6 +43,12 @@ constexpr Tolerances quadrature_tolerances(double standard) { return {1e-5, stan
 // Method metadata of the adaptive quadrature and of the Monte Carlo route.
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
 nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);
+
+// The glass tables' index axis, visibility option and model metadata
+// (glass_tables.cpp), shared with the engine presets.
+AxisSpec ior_axis(int count = 16);
+ModelOption glass_visibility_option();
+nlohmann::json glass_model(Visibility vis, bool inside);
 
 // Model metadata of the Charlie sheen lobe (sheen_tables.cpp).
 nlohmann::json charlie_sheen_model();

@@ -1,0 +1,143 @@
+// Rough dielectric (GGX glass) albedo tables: E_R, E_T and their sum, seen
+// from outside (eta = n) and from inside (eta = 1/n) over the same axis of
+// the material's index n.
+//
+// Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces"
+#include <memory>
+
+#include "brdflut/glass_integrals.h"
+#include "brdflut/random.h"
+#include "tables/registry.h"
+
+namespace brdflut {
+namespace {
+
+constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(kGlassTableTolerance);
+
+const char* kQuadratureRule =
+    "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), split "
+    "where a threshold of wo.h (reflection above the horizon, refraction below it, the critical "
+    "angle, wo.h = 0) meets phi = 0 or pi, from panels of at most 3 units of x, under the map "
+    "3u^2 - 2u^3 on each piece; nested with phi split at the same thresholds and adaptive "
+    "Gauss-Kronrod (7,15) under that map on each piece; E_avg: adaptive Gauss-Kronrod (7,15) in mu "
+    "split at alpha and the critical cosine; error per value: QUADPACK estimate plus the "
+    "integrated inner estimates";
+const char* kMcSampler = "GGX visible normals (Heitz 2018), both channels from each normal";
+
+}  // namespace
+
+namespace tables {
+
+ModelOption glass_visibility_option() {
+    return {"visibility",
+            "shadowing-masking term: height_correlated 1/(1 + Lambda(o) + Lambda(i)) (Heitz 2014, "
+            "as Cycles) or separable G1(o) G1(i) (Walter 2007), Lambda(i) of |cos(theta_i)|",
+            "height_correlated",
+            {"height_correlated", "separable"}};
+}
+
+nlohmann::json glass_model(Visibility vis, bool inside) {
+    return {{"bsdf", "GGX rough dielectric (Walter et al. 2007), single scattering"},
+            {"distribution", "ggx"},
+            {"visibility", to_string(vis)},
+            {"fresnel", "exact unpolarized dielectric, 1 under total internal reflection"},
+            {"roughness", "alpha = perceptual_roughness^2"},
+            {"side", inside ? "inside: eta = 1/n (light leaves the denser medium)"
+                            : "outside: eta = n (light enters the denser medium)"},
+            {"convention",
+             "energy: E_T includes Walter's eta_o^2 in f_t (the smooth limit of E_R + E_T is 1 on "
+             "both sides); a renderer carrying radiance across the interface multiplies E_T by "
+             "1/eta^2. Reflected or refracted directions on the wrong side of the macro surface "
+             "contribute nothing. At eta = 1 the model still masks the straight path twice: "
+             "E_T = G2(wo, -wo)(1 + Lambda(wo))"}};
+}
+
+AxisSpec ior_axis(int count) {
+    return {Axis{"ior", 1.0, 3.0, count, Placement::center, Warp::ior_z}, 1.0, HUGE_VAL,
+            "n: index of refraction of the denser medium over the other (>= 1); outside tables "
+            "use eta = n, inside tables eta = 1/n"};
+}
+
+}  // namespace tables
+
+namespace {
+
+enum class Kind { directional, average };
+
+class GlassEvaluator final : public TexelEvaluator {
+public:
+    GlassEvaluator(Kind kind, bool inside, Visibility vis, const TableSettings& s)
+        : kind_(kind), inside_(inside), vis_(vis), mc_(s.method == Method::monte_carlo),
+          samples_(s.samples), seed_(s.seed), abs_tol_(kTolerances.at(s.quality)) {}
+
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        const std::uint64_t seed = mix_seed(seed_, texel);
+        const bool avg = kind_ == Kind::average;
+        const double mu = avg ? 0.0 : c[0], alpha = avg ? c[0] : c[1], n = avg ? c[1] : c[2];
+        const double eta = inside_ ? 1.0 / n : n;
+        Estimate<2> e;
+        if (avg)
+            e = mc_ ? ggx_glass_average_mc(alpha, eta, vis_, samples_, seed)
+                    : ggx_glass_average(alpha, eta, vis_, abs_tol_);
+        else
+            e = mc_ ? ggx_glass_mc(mu, alpha, eta, vis_, samples_, seed) : ggx_glass(mu, alpha, eta, vis_, abs_tol_);
+        const double scale = mc_ ? tables::kMcErrorSigmas : 1.0;
+        TexelValue out;
+        out.value = {e.value[0], e.value[1], e.value[0] + e.value[1], 0.0};
+        out.error = {scale * e.error[0], scale * e.error[1], scale * (e.error[0] + e.error[1]), 0.0};
+        return out;
+    }
+
+private:
+    Kind kind_;
+    bool inside_;
+    Visibility vis_;
+    bool mc_;
+    long long samples_;
+    std::uint64_t seed_;
+    double abs_tol_;
+};
+
+TableDefinition make(Kind kind, bool inside, std::string id, std::string description, std::vector<AxisSpec> axes) {
+    TableDefinition d;
+    d.id = std::move(id);
+    d.description = std::move(description);
+    d.axes = std::move(axes);
+    const std::string avg = kind == Kind::average ? "2 * integral over mu of mu * " : "";
+    d.channels = {"E_R: " + avg + "integral of f_r |cos(theta_i)| dw_i over the near hemisphere",
+                  "E_T: " + avg + "integral of f_t |cos(theta_i)| dw_i over the far hemisphere (energy)",
+                  "E_R + E_T"};
+    d.options = {tables::glass_visibility_option()};
+    d.supports_monte_carlo = true;
+    d.prepare = [kind, inside](const TableSettings& s) {
+        const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
+        PreparedTable p;
+        p.evaluator = std::make_unique<GlassEvaluator>(kind, inside, vis, s);
+        p.model = tables::glass_model(vis, inside);
+        p.method = s.method == Method::monte_carlo
+                       ? tables::monte_carlo_method(kMcSampler, s)
+                       : tables::quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
+        return p;
+    };
+    return d;
+}
+
+}  // namespace
+
+void register_glass_tables(std::vector<TableDefinition>& out) {
+    using namespace tables;
+    out.push_back(make(Kind::directional, false, "ggx_glass_albedo",
+                       "GGX rough glass seen from outside (eta = n): E_R, E_T, E_R + E_T over (mu, alpha, n)",
+                       {cos_theta_axis(16), alpha_axis(16), ior_axis(16)}));
+    out.push_back(make(Kind::directional, true, "ggx_glass_albedo_inside",
+                       "GGX rough glass seen from inside (eta = 1/n): E_R, E_T, E_R + E_T over (mu, alpha, n)",
+                       {cos_theta_axis(16), alpha_axis(16), ior_axis(16)}));
+    out.push_back(make(Kind::average, false, "ggx_glass_albedo_avg",
+                       "GGX rough glass from outside, averages 2 * integral of E(mu) mu dmu over (alpha, n)",
+                       {alpha_axis(16), ior_axis(16)}));
+    out.push_back(make(Kind::average, true, "ggx_glass_albedo_avg_inside",
+                       "GGX rough glass from inside, averages 2 * integral of E(mu) mu dmu over (alpha, n)",
+                       {alpha_axis(16), ior_axis(16)}));
+}
+
+}  // namespace brdflut

@@ -1,0 +1,229 @@
+// The GGX dielectric (glass) albedos against closed forms, limits,
+// reciprocity, an independent Monte Carlo estimate and a second quadrature
+// route over the outgoing direction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/fresnel.h"
+#include "brdflut/generate.h"
+#include "brdflut/glass_integrals.h"
+#include "brdflut/quadrature.h"
+
+using namespace brdflut;
+
+namespace {
+
+constexpr Visibility kHc = Visibility::height_correlated;
+const Visibility kBoth[] = {Visibility::height_correlated, Visibility::separable};
+
+// The second route: E_R and E_T as integrals over the outgoing direction wi
+// (mu_i = |cos(theta_i)|, phi_i), with the half vector and the Jacobians of
+// Walter 2007 built from (wo, wi):
+//   reflection     h = (wo + wi) / |wo + wi|,  f_r mu_i = F D G2 / (4 mu_o)
+//   transmission   h = +-(wo + eta wi) / |wo + eta wi| (h.z > 0), valid when
+//                  wo.h > 0 > wi.h;  f_t mu_i = (1 - F) D G2 (wo.h) / mu_o
+//                  * eta^2 |wi.h| / |wo + eta wi|^2   (energy: eta_o^2 in f_t)
+// Nested adaptive Gauss-Kronrod, mu_i split at the specular cosine, phi
+// (even) over [0, pi] clustered towards pi where the specular lobe lies.
+Estimate<2> outgoing_route(double mu_o, double alpha, double eta, Visibility vis, double tol) {
+    const Ggx g{alpha};
+    const double sin_o = std::sqrt(1.0 - mu_o * mu_o);
+    const Vec3 wo{sin_o, 0.0, mu_o};
+    auto integrand = [&](double mu_i, double phi, bool transmit) -> double {
+        const double s = std::sqrt(std::max(0.0, 1.0 - mu_i * mu_i));
+        const Vec3 wi{s * std::cos(phi), s * std::sin(phi), transmit ? -mu_i : mu_i};
+        if (!transmit) {
+            Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+            const double len = std::sqrt(dot(h, h));
+            h = {h.x / len, h.y / len, h.z / len};
+            const double c = dot(wo, h);
+            if (!(c > 0.0)) return 0.0;
+            return fresnel_dielectric(std::min(c, 1.0), eta) * g.D(h.z) * g.G2(mu_o, mu_i, vis) / (4.0 * mu_o);
+        }
+        Vec3 h{wo.x + eta * wi.x, wo.y + eta * wi.y, wo.z + eta * wi.z};
+        const double len2 = dot(h, h);
+        const double len = std::sqrt(len2);
+        const double sign = h.z < 0.0 ? -1.0 : 1.0;
+        h = {sign * h.x / len, sign * h.y / len, sign * h.z / len};
+        const double c = dot(wo, h), ci = dot(wi, h);
+        if (!(c > 0.0) || !(ci < 0.0)) return 0.0;
+        const double F = fresnel_dielectric(std::min(c, 1.0), eta);
+        return (1.0 - F) * g.D(h.z) * g.G2(mu_o, mu_i, vis) * c / mu_o * eta * eta * std::abs(ci) / len2;
+    };
+    Estimate<2> out;
+    for (int side = 0; side < 2; ++side) {
+        const bool transmit = side == 1;
+        double peak = mu_o;  // the specular cosine
+        if (transmit) {
+            const double st2 = sin_o * sin_o / (eta * eta);
+            peak = st2 < 1.0 ? std::sqrt(1.0 - st2) : 0.0;
+        }
+        AdaptiveOptions outer;
+        outer.abs_tol = tol;
+        outer.controlled = 1;
+        outer.max_intervals = 2000;
+        AdaptiveOptions inner = outer;
+        inner.abs_tol = 0.01 * tol;
+        auto over_phi = [&](double mu_i) {
+            // phi = pi (1 - v^2): clustered at phi = pi.
+            const Estimate<1> e = integrate_adaptive<1>(
+                [&](double v) {
+                    const double phi = kPi * (1.0 - v * v);
+                    return std::array<double, 1>{2.0 * kPi * 2.0 * v * integrand(mu_i, phi, transmit)};
+                },
+                0.0, 1.0, inner);
+            return std::array<double, 1>{e.value[0]};
+        };
+        double total = 0.0, err = 0.0;
+        for (auto [a, b] : {std::pair{0.0, peak}, std::pair{peak, 1.0}}) {
+            if (!(b > a)) continue;
+            // smoothstep in each piece: dense at the peak and at the ends.
+            const Estimate<1> e = integrate_adaptive<1>(
+                [&](double u) {
+                    const double m = a + (b - a) * u * u * (3.0 - 2.0 * u);
+                    const std::array<double, 1> y = over_phi(m);
+                    return std::array<double, 1>{y[0] * (b - a) * 6.0 * u * (1.0 - u)};
+                },
+                0.0, 1.0, outer);
+            total += e.value[0];
+            err += e.error[0];
+        }
+        out.value[static_cast<std::size_t>(side)] = total;
+        out.error[static_cast<std::size_t>(side)] = err;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(GlassIntegrals, NoInterfaceReflectsNothingAndTransmitsTheDoublyMaskedStraightPath) {
+    // eta = 1: F = 0 for every microfacet, the refraction of wo about any h
+    // is -wo, so E_R = 0 exactly and E_T = G2(wo, -wo) integral of (wo.h)+ D
+    // dw_h / mu_o = G2(wo, -wo) (1 + Lambda(wo)): 1 in the smooth limit.
+    for (Visibility vis : kBoth)
+        for (double alpha : {0.05, 0.3, 1.0})
+            for (double mu : {0.05, 0.4, 0.9}) {
+                const Ggx g{alpha};
+                const Estimate<2> e = ggx_glass(mu, alpha, 1.0, vis, 1e-11);
+                const double expect = g.G2(mu, mu, vis) * (1.0 + g.lambda(mu));
+                EXPECT_EQ(e.value[0], 0.0) << "alpha " << alpha << " mu " << mu;
+                EXPECT_NEAR(e.value[1], expect, 1e-10) << "alpha " << alpha << " mu " << mu;
+            }
+    // Smooth: E_T = 1, E_R = 0 exactly.
+    const Estimate<2> smooth = ggx_glass(0.4, 0.0, 1.0, kHc);
+    EXPECT_EQ(smooth.value[0], 0.0);
+    EXPECT_EQ(smooth.value[1], 1.0);
+    // And the rough value tends to 1 as alpha -> 0.
+    EXPECT_NEAR(ggx_glass(0.4, 1e-4, 1.0, kHc, 1e-12).value[1], 1.0, 1e-6);
+}
+
+TEST(GlassIntegrals, SmoothLimitIsFresnelOnBothSidesIncludingTotalInternalReflection) {
+    // alpha -> 0: E_R -> F(mu), E_T -> 1 - F(mu); inside (eta = 1/n) below
+    // the critical cosine sqrt(1 - 1/n^2) F = 1. The departure shrinks
+    // with alpha (it is O(alpha^2) away from the critical angle).
+    for (double n : {1.33, 2.5})
+        for (double eta : {n, 1.0 / n})
+            for (double mu : {0.1, 0.5, 0.8, 1.0}) {
+                const double F = fresnel_dielectric(mu, eta);
+                double prev = HUGE_VAL;
+                for (double alpha : {1e-2, 1e-3, 1e-4}) {
+                    const Estimate<2> e = ggx_glass(mu, alpha, eta, kHc, 1e-10);
+                    const double d = std::abs(e.value[0] - F) + std::abs(e.value[1] - (1.0 - F));
+                    EXPECT_LT(d, alpha == 1e-4 ? 2e-5 : prev) << "eta " << eta << " mu " << mu << " alpha " << alpha;
+                    prev = d;
+                }
+            }
+}
+
+TEST(GlassIntegrals, TransmissionAveragesAreReciprocalAcrossTheInterface) {
+    // Walter's model obeys reciprocity: T_avg(n) outside = n^2 T_avg(1/n) inside.
+    // The tolerances are set so that both sides are well within 1e-9 relative.
+    for (double n : {1.05, 1.5, 2.5})
+        for (double alpha : {0.05, 0.3, 1.0}) {
+            const Estimate<2> out = ggx_glass_average(alpha, n, kHc, 1e-11);
+            const Estimate<2> in = ggx_glass_average(alpha, 1.0 / n, kHc, 1e-11 / (n * n));
+            ASSERT_LT(out.error[1] + n * n * in.error[1], 0.5e-9 * out.value[1]);
+            EXPECT_NEAR(out.value[1], n * n * in.value[1], 1e-9 * out.value[1]) << "n " << n << " alpha " << alpha;
+        }
+}
+
+TEST(GlassIntegrals, AgreesWithMonteCarloWithinFourStandardErrors) {
+    struct Case {
+        double mu, alpha, eta;
+        const char* what;
+    };
+    const double critical = std::sqrt(1.0 - 1.0 / (1.5 * 1.5));  // inside glass
+    const Case cases[] = {
+        {0.02, 0.3, 1.5, "grazing outside"},
+        {0.02, 0.3, 1.0 / 1.5, "grazing inside"},
+        {0.6, 0.0009765625, 1.5, "smallest alpha of the default grid"},
+        {0.6, 0.0009765625, 1.0 / 1.5, "smallest alpha inside"},
+        {0.5, 0.2, 1.01, "n near 1 outside"},
+        {0.5, 0.2, 1.0 / 1.01, "n near 1 inside"},
+        {critical * 0.98, 0.1, 1.0 / 1.5, "inside just below the critical cosine"},
+        {critical * 1.02, 0.1, 1.0 / 1.5, "inside just above the critical cosine"},
+        {0.7, 1.0, 3.0, "alpha 1, n 3"},
+    };
+    for (Visibility vis : kBoth)
+        for (const Case& c : cases) {
+            const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, vis, 1e-10);
+            const Estimate<2> m = ggx_glass_mc(c.mu, c.alpha, c.eta, vis, 400000, 11);
+            for (int k = 0; k < 2; ++k) {
+                const double sigma = std::max(m.error[static_cast<std::size_t>(k)], 1e-12);
+                EXPECT_LE(std::abs(q.value[static_cast<std::size_t>(k)] - m.value[static_cast<std::size_t>(k)]), 4.0 * sigma)
+                    << c.what << " channel " << k << " vis " << to_string(vis);
+            }
+        }
+    // The averages too.
+    for (double eta : {1.5, 1.0 / 1.5}) {
+        const Estimate<2> q = ggx_glass_average(0.3, eta, kHc, 1e-9);
+        const Estimate<2> m = ggx_glass_average_mc(0.3, eta, kHc, 400000, 5);
+        for (int k = 0; k < 2; ++k)
+            EXPECT_LE(std::abs(q.value[static_cast<std::size_t>(k)] - m.value[static_cast<std::size_t>(k)]),
+                      4.0 * m.error[static_cast<std::size_t>(k)])
+                << "average eta " << eta << " channel " << k;
+    }
+}
+
+TEST(GlassIntegrals, AgreesWithAQuadratureOverTheOutgoingDirection) {
+    struct Case {
+        double mu, alpha, eta;
+    };
+    const Case cases[] = {
+        {0.9, 0.5, 1.5},  {0.3, 0.3, 1.5},  {0.02, 0.6, 1.5},        // outside, grazing
+        {0.9, 0.5, 1 / 1.5}, {0.5, 0.4, 1 / 1.5}, {0.3, 0.3, 1 / 1.5},  // inside, TIR at 0.5 and 0.3
+        {0.05, 0.8, 1 / 2.5}, {0.7, 1.0, 2.5}, {0.2, 0.25, 1.2},
+    };
+    for (const Case& c : cases) {
+        const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, kHc, 1e-11);
+        const Estimate<2> o = outgoing_route(c.mu, c.alpha, c.eta, kHc, 1e-10);
+        for (int k = 0; k < 2; ++k)
+            EXPECT_NEAR(q.value[static_cast<std::size_t>(k)], o.value[static_cast<std::size_t>(k)], 1e-8)
+                << "mu " << c.mu << " alpha " << c.alpha << " eta " << c.eta << " channel " << k;
+    }
+}
+
+TEST(GlassIntegrals, ErrorEstimatesAreNeverBelowTheActualErrorOnADenseGrid) {
+    // At loose tolerances (where the errors are large enough to see) against
+    // a run 1e4 times tighter.
+    int checked = 0;
+    for (double tol : {1e-6, 2e-8})
+        for (double eta : {1.5, 1.0 / 1.5, 3.0, 1.0 / 3.0, 1.02})
+            for (double alpha : {0.002, 0.03, 0.2, 0.6, 1.0})
+                for (double mu : {0.0, 0.01, 0.15, 0.45, 0.74, 0.99}) {
+                    const Estimate<2> a = ggx_glass(mu, alpha, eta, kHc, tol);
+                    const Estimate<2> b = ggx_glass(mu, alpha, eta, kHc, tol * 1e-4);
+                    for (int k = 0; k < 2; ++k) {
+                        const std::size_t c = static_cast<std::size_t>(k);
+                        const double actual = std::abs(a.value[c] - b.value[c]);
+                        EXPECT_LE(actual, a.error[c] + b.error[c])
+                            << "tol " << tol << " eta " << eta << " alpha " << alpha << " mu " << mu << " channel " << k;
+                        EXPECT_LE(a.error[c], tol) << "tol " << tol << " eta " << eta << " alpha " << alpha << " mu " << mu;
+                        ++checked;
+                    }
+                }
+    EXPECT_EQ(checked, 2 * 5 * 5 * 6 * 2);
+}
