@@ -141,10 +141,10 @@ TEST(GlassIntegrals, SmoothLimitIsFresnelOnBothSidesIncludingTotalInternalReflec
 TEST(GlassIntegrals, TransmissionAveragesAreReciprocalAcrossTheInterface) {
     // Walter's model obeys reciprocity: T_avg(n) outside = n^2 T_avg(1/n) inside.
     // The tolerances are set so that both sides are well within 1e-9 relative.
-    for (double n : {1.05, 1.5, 2.5})
-        for (double alpha : {0.05, 0.3, 1.0}) {
-            const Estimate<2> out = ggx_glass_average(alpha, n, kHc, 1e-11);
-            const Estimate<2> in = ggx_glass_average(alpha, 1.0 / n, kHc, 1e-11 / (n * n));
+    for (double n : {1.05, 2.5})
+        for (double alpha : {0.05, 1.0}) {
+            const Estimate<2> out = ggx_glass_average(alpha, n, kHc, 4e-11);
+            const Estimate<2> in = ggx_glass_average(alpha, 1.0 / n, kHc, 4e-11 / (n * n));
             ASSERT_LT(out.error[1] + n * n * in.error[1], 0.5e-9 * out.value[1]);
             EXPECT_NEAR(out.value[1], n * n * in.value[1], 1e-9 * out.value[1]) << "n " << n << " alpha " << alpha;
         }
@@ -169,8 +169,8 @@ TEST(GlassIntegrals, AgreesWithMonteCarloWithinFourStandardErrors) {
     };
     for (Visibility vis : kBoth)
         for (const Case& c : cases) {
-            const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, vis, 1e-10);
-            const Estimate<2> m = ggx_glass_mc(c.mu, c.alpha, c.eta, vis, 400000, 11);
+            const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, vis, 1e-9);
+            const Estimate<2> m = ggx_glass_mc(c.mu, c.alpha, c.eta, vis, 100000, 11);
             for (int k = 0; k < 2; ++k) {
                 const double sigma = std::max(m.error[static_cast<std::size_t>(k)], 1e-12);
                 EXPECT_LE(std::abs(q.value[static_cast<std::size_t>(k)] - m.value[static_cast<std::size_t>(k)]), 4.0 * sigma)
@@ -179,8 +179,8 @@ TEST(GlassIntegrals, AgreesWithMonteCarloWithinFourStandardErrors) {
         }
     // The averages too.
     for (double eta : {1.5, 1.0 / 1.5}) {
-        const Estimate<2> q = ggx_glass_average(0.3, eta, kHc, 1e-9);
-        const Estimate<2> m = ggx_glass_average_mc(0.3, eta, kHc, 400000, 5);
+        const Estimate<2> q = ggx_glass_average(0.3, eta, kHc, 1e-7);
+        const Estimate<2> m = ggx_glass_average_mc(0.3, eta, kHc, 100000, 5);
         for (int k = 0; k < 2; ++k)
             EXPECT_LE(std::abs(q.value[static_cast<std::size_t>(k)] - m.value[static_cast<std::size_t>(k)]),
                       4.0 * m.error[static_cast<std::size_t>(k)])
@@ -198,24 +198,25 @@ TEST(GlassIntegrals, AgreesWithAQuadratureOverTheOutgoingDirection) {
         {0.05, 0.8, 1 / 2.5}, {0.7, 1.0, 2.5}, {0.2, 0.25, 1.2},
     };
     for (const Case& c : cases) {
-        const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, kHc, 1e-11);
-        const Estimate<2> o = outgoing_route(c.mu, c.alpha, c.eta, kHc, 1e-10);
+        const Estimate<2> q = ggx_glass(c.mu, c.alpha, c.eta, kHc, 1e-10);
+        const Estimate<2> o = outgoing_route(c.mu, c.alpha, c.eta, kHc, 1e-9);
         for (int k = 0; k < 2; ++k)
-            EXPECT_NEAR(q.value[static_cast<std::size_t>(k)], o.value[static_cast<std::size_t>(k)], 1e-8)
+            EXPECT_NEAR(q.value[static_cast<std::size_t>(k)], o.value[static_cast<std::size_t>(k)], 2e-8)
                 << "mu " << c.mu << " alpha " << c.alpha << " eta " << c.eta << " channel " << k;
     }
 }
 
 TEST(GlassIntegrals, ErrorEstimatesAreNeverBelowTheActualErrorOnADenseGrid) {
-    // At loose tolerances (where the errors are large enough to see) against
-    // a run 1e4 times tighter.
+    // At a loose tolerance (where the errors are large enough to see)
+    // against a run 1e4 times tighter, and at the tables' tolerance against
+    // one 100 times tighter.
     int checked = 0;
-    for (double tol : {1e-6, 2e-8})
+    for (double tol : {1e-6, kGlassTableTolerance})
         for (double eta : {1.5, 1.0 / 1.5, 3.0, 1.0 / 3.0, 1.02})
-            for (double alpha : {0.002, 0.03, 0.2, 0.6, 1.0})
-                for (double mu : {0.0, 0.01, 0.15, 0.45, 0.74, 0.99}) {
+            for (double alpha : {0.002, 0.05, 0.4, 1.0})
+                for (double mu : {0.0, 0.03, 0.3, 0.74, 0.99}) {
                     const Estimate<2> a = ggx_glass(mu, alpha, eta, kHc, tol);
-                    const Estimate<2> b = ggx_glass(mu, alpha, eta, kHc, tol * 1e-4);
+                    const Estimate<2> b = ggx_glass(mu, alpha, eta, kHc, tol == 1e-6 ? 1e-10 : 2e-10);
                     for (int k = 0; k < 2; ++k) {
                         const std::size_t c = static_cast<std::size_t>(k);
                         const double actual = std::abs(a.value[c] - b.value[c]);
@@ -225,5 +226,27 @@ TEST(GlassIntegrals, ErrorEstimatesAreNeverBelowTheActualErrorOnADenseGrid) {
                         ++checked;
                     }
                 }
-    EXPECT_EQ(checked, 2 * 5 * 5 * 6 * 2);
+    EXPECT_EQ(checked, 2 * 5 * 4 * 5 * 2);
+}
+
+TEST(GlassTables, ByteIdenticalForOneTwoAndAllThreadsAndWithinStoragePrecisionOfATighterRun) {
+    for (const char* id : {"ggx_glass_albedo_inside", "ggx_glass_albedo_avg"}) {
+        const TableDefinition& def = find_table(id);
+        TableSettings s = default_settings(def);
+        for (Axis& a : s.axes) a.count = 3;
+        GenerateOptions one, two, all;
+        one.threads = 1;
+        two.threads = 2;
+        const Table t1 = generate(def, s, one), t2 = generate(def, s, two), ta = generate(def, s, all);
+        ASSERT_EQ(t1.values.size(), t2.values.size());
+        EXPECT_EQ(std::memcmp(t1.values.data(), t2.values.data(), t1.values.size() * sizeof(double)), 0) << id;
+        EXPECT_EQ(std::memcmp(t1.values.data(), ta.values.data(), t1.values.size() * sizeof(double)), 0) << id;
+        TableSettings tight = s;
+        tight.quality = Quality::reference;
+        const Table r = generate(def, tight, two);
+        for (std::size_t i = 0; i < t1.values.size(); ++i)
+            EXPECT_LE(std::abs(static_cast<double>(static_cast<float>(t1.values[i])) - r.values[i]), 1e-7)
+                << id << " value " << i;
+        EXPECT_LT(error_bound(t1, PixelType::float32), 1e-7) << id;
+    }
 }
