@@ -12,7 +12,8 @@
 namespace brdflut {
 namespace {
 
-constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(kGlassTableTolerance);
+constexpr tables::Tolerances kTolerances = tables::kGlassTolerances;
+static_assert(tables::kGlassTolerances.standard == kGlassTableTolerance);
 
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), split "

@@ -93,7 +93,7 @@ public:
                 const double eta = kind_ == Kind::cycles_glass_e ? c[2] : 1.0 / c[2];
                 Estimate<2> e = mc_ ? ggx_glass_mc(c[1], c[0], eta, Visibility::height_correlated, samples_, seed)
                                     : ggx_glass(c[1], c[0], eta, Visibility::height_correlated,
-                                                tolerance(kGlassTableTolerance));
+                                                tables::kGlassTolerances.at(quality_));
                 out.value[0] = e.value[0] + e.value[1];
                 out.error[0] = scale() * (e.error[0] + e.error[1]);
                 break;
@@ -103,7 +103,7 @@ public:
                 const double eta = kind_ == Kind::cycles_glass_e_avg ? c[1] : 1.0 / c[1];
                 Estimate<2> e = mc_ ? ggx_glass_average_mc(c[0], eta, Visibility::height_correlated, samples_, seed)
                                     : ggx_glass_average(c[0], eta, Visibility::height_correlated,
-                                                        tolerance(kGlassTableTolerance));
+                                                        tables::kGlassTolerances.at(quality_));
                 out.value[0] = e.value[0] + e.value[1];
                 out.error[0] = scale() * (e.error[0] + e.error[1]);
                 break;
@@ -238,7 +238,7 @@ TableDefinition make(Entry e) {
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
                                                     "mixture (sheen_*)", s)
                        : tables::quadrature_method(kQuadratureRule,
-                                                   tables::quadrature_tolerances(glass ? kGlassTableTolerance : kGgxAbsTolerance)
+                                                   (glass ? tables::kGlassTolerances : tables::quadrature_tolerances(kGgxAbsTolerance))
                                                        .at(s.quality));
         return p;
     };
