@@ -231,12 +231,21 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     const GlassIntegrand f(alpha, vis, mu_o, eta);
     const double ln_alpha = std::log(alpha);
 
-    // The x range, cut where the weight left beyond it is below 1e-3 abs_tol:
-    // below, (1/2) sech^2 leaves e^(2x) against an integrand of at most 1;
-    // above, 2 e^(-2x) against one of at most pi t / mu_o = pi alpha e^x / mu_o.
-    const double x_lo = std::max(kLowX, 0.5 * std::log(1e-3 * abs_tol));
-    const double x_hi = std::min(kHighX, std::log(2.0 * kPi * alpha / (mu_o * 1e-3 * abs_tol)));
+    // The x range, cut where what is left beyond it is below 1e-3 abs_tol.
+    // The integrand (per unit of the measure, averaged over phi) is at most
+    // G1(wo) c / (mu_o cos(theta_h)) <= g (1 + t / mu_o), g = G1(wo): below
+    // x_lo the measure (1/2) sech^2(x) dx leaves at most
+    // g (e^(2 x_lo) + (2/3)(alpha / mu_o) e^(3 x_lo)), above x_hi at most
+    // g (e^(-2 x_hi) + 2 (alpha / mu_o) e^(-x_hi)); both bounds are added to
+    // the error estimate.
+    const double g1 = f.ggx.G1(mu_o);
+    const double x_lo = std::max(kLowX, 0.5 * std::log(1e-3 * abs_tol / std::max(g1, 1e-300)));
+    const double x_hi = std::min(kHighX, std::log(4.0 * g1 * alpha / (mu_o * 1e-3 * abs_tol)));
     std::vector<double> xs{x_lo, std::max(x_hi, x_lo + 1.0)};
+    const double r_a = alpha / mu_o;
+    const double tails = g1 * (std::exp(2.0 * xs[0]) + (2.0 / 3.0) * r_a * std::exp(3.0 * xs[0]) +
+                               std::exp(-2.0 * xs[1]) + 2.0 * r_a * std::exp(-xs[1]));
+    out.error = {tails, tails};
     for (double t : outer_breaks(f)) {
         const double x = std::log(t) - ln_alpha;
         if (x > xs[0] && x < xs[1]) xs.push_back(x);
@@ -245,10 +254,12 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
     const int segments = static_cast<int>(xs.size()) - 1;
 
-    // Error budget per segment: 0.6 abs_tol for the outer rule and 0.3 abs_tol
-    // for the inner integrals it accumulates, shared among the segments.
+    // Error budget per segment: 0.3 abs_tol for the outer rule (whose
+    // estimate is reported doubled: QUADPACK's heuristic was found up to 25 %
+    // low on this integrand) and 0.3 abs_tol for the inner integrals it
+    // accumulates, shared among the segments.
     AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.6 * abs_tol / segments;
+    outer_opt.abs_tol = 0.3 * abs_tol / segments;
     outer_opt.controlled = 2;
     outer_opt.rule = KronrodRule::k31;
     outer_opt.max_intervals = 400;
@@ -275,7 +286,7 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
             0.0, 1.0, panels, outer_opt);
         for (int c = 0; c < 2; ++c) {
             out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
-            out.error[static_cast<std::size_t>(c)] += e.error[static_cast<std::size_t>(c)] + e.value[2];
+            out.error[static_cast<std::size_t>(c)] += 2.0 * e.error[static_cast<std::size_t>(c)] + e.value[2];
         }
         out.evaluations += e.evaluations + inner_evals;
     }
