@@ -239,7 +239,8 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     // g (e^(-2 x_hi) + 2 (alpha / mu_o) e^(-x_hi)); both bounds are added to
     // the error estimate.
     const double g1 = f.ggx.G1(mu_o);
-    const double x_lo = std::max(kLowX, 0.5 * std::log(1e-3 * abs_tol / std::max(g1, 1e-300)));
+    const double eps = 0.5e-3 * abs_tol / std::max(g1, 1e-300);
+    const double x_lo = std::max(kLowX, std::min({0.5 * std::log(eps), std::log(1.5 * eps * mu_o / alpha) / 3.0, 0.0}));
     const double x_hi = std::min(kHighX, std::log(4.0 * g1 * alpha / (mu_o * 1e-3 * abs_tol)));
     std::vector<double> xs{x_lo, std::max(x_hi, x_lo + 1.0)};
     const double r_a = alpha / mu_o;
