@@ -149,6 +149,33 @@ TEST(GlassIntegrals, TransmissionAveragesAreReciprocalAcrossTheInterface) {
     }
 }
 
+TEST(GlassIntegrals, AveragesAgreeWithTheIntegralOverMuOfTheDirectionalAlbedo) {
+    // Two routes: (theta_h, wo.h, azimuth about h) with the Fresnel factor out
+    // of the inner integral, against adaptive quadrature in mu of ggx_glass.
+    // Each must be within its own error estimate of the other.
+    struct Case {
+        double alpha, eta;
+        Visibility vis;
+    };
+    const Case cases[] = {
+        {0.0009765625, 1.5, kHc},            // smallest alpha of the default grid
+        {0.3, 1.0 / 1.5, kHc},               // inside: total internal reflection
+        {0.05, 1.0 / 1.05, kHc},             // n near 1, inside
+        {1.0, 2.5, Visibility::separable},   // rough, dense, separable masking
+        {0.5, 1.0, kHc},                     // no interface
+        {0.02, 1.0 / 2.5, Visibility::separable},
+    };
+    for (const Case& c : cases) {
+        const Estimate<2> a = ggx_glass_average(c.alpha, c.eta, c.vis, 1e-9);
+        const Estimate<2> b = ggx_glass_average_over_mu(c.alpha, c.eta, c.vis, 1e-8);
+        for (std::size_t k = 0; k < 2; ++k) {
+            EXPECT_LE(a.error[k], 1e-9) << "alpha " << c.alpha << " eta " << c.eta;
+            EXPECT_LE(std::abs(a.value[k] - b.value[k]), a.error[k] + b.error[k])
+                << "alpha " << c.alpha << " eta " << c.eta << " channel " << k;
+        }
+    }
+}
+
 TEST(GlassIntegrals, AgreesWithMonteCarloWithinFourStandardErrors) {
     struct Case {
         double mu, alpha, eta;

@@ -50,9 +50,19 @@ inline constexpr double kGlassTableTolerance = 2e-8;
 Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis,
                       double abs_tol = kGlassAbsTolerance);
 
-// {E_R avg, E_T avg}: 2 * integral of E(mu) mu dmu, by quadrature.
+// {E_R avg, E_T avg}: 2 * integral of E(mu) mu dmu, by quadrature over the
+// half vector and the direction of wo about it:
+//   E_avg = (1/pi) integral of D(h) dw_h  integral over c = wo.h in [0, 1] of
+//           c {F(c), 1 - F(c)}  integral over the azimuth psi of wo about h of G2,
+// on the domain where wo and the reflected (refracted) direction are on the
+// right sides. F depends on c alone, so the Fresnel factor leaves the psi
+// integral, and every domain of psi is an interval in closed form.
 Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis,
                               double abs_tol = kGlassAbsTolerance);
+// The same averages by a second route: adaptive quadrature in mu of
+// ggx_glass(mu) (much slower; the tests hold the two against each other).
+Estimate<2> ggx_glass_average_over_mu(double alpha, double eta, Visibility vis,
+                                      double abs_tol = kGlassAbsTolerance);
 
 // Monte Carlo estimates by visible-normal sampling (Heitz 2018), both
 // channels from each sampled normal: value = the mean, error = its standard

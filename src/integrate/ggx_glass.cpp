@@ -31,8 +31,10 @@
 //   c*              theta_h = atan((sin_o - eta) / mu_o) (the in-plane ray refracted
 //                   exactly to the horizon, when sin_o > eta)
 //   c* = sqrt(k)    cos(theta_h) = mu_o / sqrt(k)
-// and each piece is integrated by adaptive Gauss-Kronrod (15, 31) under the
-// same smoothstep map, from panels of at most 3 units of x. Each inner
+// and at x = +-1. Each piece is integrated by adaptive Gauss-Kronrod (15, 31)
+// under the same smoothstep map, from panels of at most 8 units of x; the
+// first and the last piece, which reach x = -inf and +inf, over
+// v = e^(-|x|), in which the tails are analytic up to v = 0. Each inner
 // integral gets the tolerance its outer weight requires, and its error
 // estimate is integrated with the values, so the reported error covers both
 // levels.
@@ -48,10 +50,10 @@ namespace brdflut {
 namespace {
 
 constexpr double kGrazingMu = 1e-16;
-// The x range: below kLowX the weight left is below 1e-17 (integrand <= 1 there);
-// above kHighX below 1e-15 against an integrand growing like e^x.
-constexpr double kLowX = -20.0;
-constexpr double kHighX = 36.0;
+// Where the outer integral changes from x to v = e^(-|x|).
+constexpr double kTailX = 1.0;
+// Below this v the tails' weight (2 v dv) is negligible and t or 1/t overflows.
+constexpr double kSmallestV = 1e-100;
 // Panels of the outer rule: the integrand has poles pi/2 off the real x axis
 // (those of sech^2(x), and of cos(theta_h) at t = +-i), so on a panel of
 // width 8 the (15, 31) Kronrod rule converges like 1.47^-62 ~ 5e-11; the
@@ -231,25 +233,16 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     const GlassIntegrand f(alpha, vis, mu_o, eta);
     const double ln_alpha = std::log(alpha);
 
-    // The x range, cut where what is left beyond it is below 1e-3 abs_tol.
-    // The integrand (per unit of the measure, averaged over phi) is at most
-    // G1(wo) c / (mu_o cos(theta_h)) <= g (1 + t / mu_o), g = G1(wo): below
-    // x_lo the measure (1/2) sech^2(x) dx leaves at most
-    // g (e^(2 x_lo) + (2/3)(alpha / mu_o) e^(3 x_lo)), above x_hi at most
-    // g (e^(-2 x_hi) + 2 (alpha / mu_o) e^(-x_hi)); both bounds are added to
-    // the error estimate.
-    const double g1 = f.ggx.G1(mu_o);
-    const double eps = 0.5e-3 * abs_tol / std::max(g1, 1e-300);
-    const double x_lo = std::max(kLowX, std::min({0.5 * std::log(eps), std::log(1.5 * eps * mu_o / alpha) / 3.0, 0.0}));
-    const double x_hi = std::min(kHighX, std::log(4.0 * g1 * alpha / (mu_o * 1e-3 * abs_tol)));
-    std::vector<double> xs{x_lo, std::max(x_hi, x_lo + 1.0)};
-    const double r_a = alpha / mu_o;
-    const double tails = g1 * (std::exp(2.0 * xs[0]) + (2.0 / 3.0) * r_a * std::exp(3.0 * xs[0]) +
-                               std::exp(-2.0 * xs[1]) + 2.0 * r_a * std::exp(-xs[1]));
-    out.error = {tails, tails};
+    // Segments in x, split at the break points and at x = +-kTailX. On the
+    // first and the last segment, beyond every break point, the integral is
+    // taken over v = e^(-|x|) instead, in which both tails are analytic up to
+    // v = 0 (t -> 0 and theta_h -> pi/2): the whole x axis is covered, with
+    // no cut and no tail bound. Between them x itself keeps the scales of
+    // the half-vector distribution apart.
+    std::vector<double> xs{-HUGE_VAL, -kTailX, kTailX, HUGE_VAL};
     for (double t : outer_breaks(f)) {
         const double x = std::log(t) - ln_alpha;
-        if (x > xs[0] && x < xs[1]) xs.push_back(x);
+        if (std::isfinite(x)) xs.push_back(x);
     }
     std::sort(xs.begin(), xs.end());
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
@@ -267,17 +260,29 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     const double inner_budget = 0.3 * abs_tol / segments;
 
     for (int s = 0; s < segments; ++s) {
-        const double x0 = xs[static_cast<std::size_t>(s)], len = xs[static_cast<std::size_t>(s) + 1] - x0;
-        const int panels = std::max(1, static_cast<int>(std::ceil(len / kPanelWidth)));
+        const double xa = xs[static_cast<std::size_t>(s)], xb = xs[static_cast<std::size_t>(s) + 1];
+        // side 0: x itself; side -1 / +1: v = e^x on the first segment, v = e^(-x) on the last.
+        const int side = s == 0 ? -1 : s == segments - 1 ? 1 : 0;
+        const double y0 = side == 0 ? xa : side < 0 ? std::exp(xa) : std::exp(-xb);
+        const double len = (side == 0 ? xb : side < 0 ? std::exp(xb) : std::exp(-xa)) - y0;
+        const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
         int inner_evals = 0;
         const Estimate<3> e = integrate_adaptive_panels<3>(
             [&](double u) -> std::array<double, 3> {
-                const double x = x0 + len * smoothstep(u);
-                const double ch = std::cosh(x);
-                // (1/2) sech^2(x) / pi: phi is integrated over [0, pi] only.
-                const double w = 0.5 / (ch * ch) * kInvPi * len * smoothstep_slope(u);
+                const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
+                double w, t;
+                if (side == 0) {
+                    const double ch = std::cosh(y);
+                    // (1/2) sech^2(x) / pi: phi is integrated over [0, pi] only.
+                    w = 0.5 / (ch * ch) * kInvPi * dy;
+                    t = alpha * std::exp(y);
+                } else {
+                    // (1/2) sech^2(x) dx = 2 v / (1 + v^2)^2 dv, v = e^(-|x|).
+                    if (!(y > kSmallestV)) return {0.0, 0.0, 0.0};
+                    w = 2.0 * y / ((1.0 + y * y) * (1.0 + y * y)) * kInvPi * dy;
+                    t = side < 0 ? alpha * y : alpha / y;
+                }
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const double t = alpha * std::exp(x);
                 const double size = kPi * std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
                 const double tol = std::min(kMaxInnerRel * size, inner_budget / w);
                 std::array<double, 3> r = ring_integral(f, t, tol, &inner_evals);
@@ -294,14 +299,19 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     return out;
 }
 
-Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
+Estimate<2> ggx_glass_average_over_mu(double alpha, double eta, Visibility vis, double abs_tol) {
     Estimate<2> out;
     if (!(eta > 0.0)) return out;
-    // Break points of E(mu): alpha (where G1(mu) falls off) and the critical
-    // cosine sqrt(1 - eta^2) (total internal reflection below it when eta < 1).
+    // Break points of E(mu): alpha (where G1(mu) falls off); from inside
+    // (eta < 1) the critical cosine sqrt(1 - eta^2), below which total
+    // internal reflection sets in, and mu = eta, where the break theta_o +
+    // theta_c of the half-vector integral reaches the horizon.
     std::vector<double> mus{0.0, 1.0};
     if (alpha > 0.0 && alpha < 1.0) mus.push_back(alpha);
-    if (eta < 1.0) mus.push_back(std::sqrt(1.0 - eta * eta));
+    if (eta < 1.0) {
+        mus.push_back(std::sqrt(1.0 - eta * eta));
+        mus.push_back(eta);
+    }
     std::sort(mus.begin(), mus.end());
     mus.erase(std::unique(mus.begin(), mus.end()), mus.end());
     const int segments = static_cast<int>(mus.size()) - 1;
@@ -309,15 +319,18 @@ Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double a
     opt.abs_tol = 0.5 * abs_tol / segments;
     opt.controlled = 2;
     opt.max_intervals = 400;
-    const double budget = 0.4 * abs_tol / segments;
+    // The E(mu) errors are integrated against the weight 2 mu dmu, whose
+    // total is 1: a tolerance of 0.4 abs_tol on each keeps their part of the
+    // error below 0.4 abs_tol (it is integrated and reported, not assumed).
+    const double tol = std::min(kMaxNestedTol, 0.4 * abs_tol);
     for (int s = 0; s < segments; ++s) {
-        const double m0 = mus[static_cast<std::size_t>(s)], len = mus[static_cast<std::size_t>(s) + 1] - m0;
+        const double m0 = mus[static_cast<std::size_t>(s)], m1 = mus[static_cast<std::size_t>(s) + 1];
+        const double len = m1 - m0;
         const Estimate<3> e = integrate_adaptive<3>(
             [&](double u) -> std::array<double, 3> {
                 const double mu = m0 + len * smoothstep(u);
                 const double w = 2.0 * mu * len * smoothstep_slope(u);
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const double tol = std::min(kMaxNestedTol, budget / w);
                 const Estimate<2> d = alpha > 0.0 ? ggx_glass(mu, alpha, eta, vis, tol) : smooth_limit(mu, eta);
                 return {w * d.value[0], w * d.value[1], w * (d.error[0] + d.error[1])};
             },
@@ -327,6 +340,207 @@ Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double a
             out.error[static_cast<std::size_t>(c)] += e.error[static_cast<std::size_t>(c)] + e.value[2];
         }
         out.evaluations += e.evaluations;
+    }
+    return out;
+}
+
+
+namespace {
+
+// The averages over (theta_h, c = wo.h, psi), psi the azimuth of wo about h
+// (see ggx_glass_average in glass_integrals.h). With s_c = sqrt(1 - c^2):
+//   mu_o = c cos(theta_h) + s_c sin(theta_h) cos(psi)
+//   mu_i = c cos(theta_h) - s_c sin(theta_h) cos(psi)          (reflection)
+//   |mu_t| = cos_t cos(theta_h) + sin_t sin(theta_h) cos(psi)   (refraction, sin_t = s_c / eta)
+// all linear in cos(psi), so each domain is an interval of psi in closed form.
+struct AverageIntegrand {
+    Ggx ggx;
+    Visibility vis;
+    double eta;
+    double c_crit;  // sqrt(1 - eta^2) when eta < 1, else 0
+
+    AverageIntegrand(double alpha, Visibility v, double e)
+        : ggx{alpha}, vis(v), eta(e), c_crit(e < 1.0 ? std::sqrt((1.0 - e) * (1.0 + e)) : 0.0) {}
+
+    // {F, 1 - F, cos_t} at c (F = 1, cos_t = 0 under total internal reflection).
+    std::array<double, 3> fresnel(double c) const {
+        if (eta == 1.0) return {0.0, 1.0, c};
+        const double ct2 = 1.0 - (1.0 - c * c) / (eta * eta);
+        if (!(ct2 > 0.0)) return {1.0, 0.0, 0.0};
+        const double cos_t = std::sqrt(ct2);
+        const double s_den = c + eta * cos_t, p_den = eta * c + cos_t;
+        const double rs = (c - eta * cos_t) / s_den, rp = (eta * c - cos_t) / p_den;
+        return {0.5 * (rs * rs + rp * rp), 2.0 * eta * c * cos_t * (1.0 / (s_den * s_den) + 1.0 / (p_den * p_den)),
+                cos_t};
+    }
+};
+
+double acos_clamped(double x) { return x >= 1.0 ? 0.0 : x <= -1.0 ? kPi : std::acos(x); }
+
+// Integral over psi in [0, pi] at fixed (theta_h, c) of {G2 on the
+// reflection domain, G2 on the refraction domain, error estimate}.
+std::array<double, 3> psi_integral(const AverageIntegrand& f, double cos_h, double sin_h, double c, double cos_t,
+                                   bool refracts, double tol, long long* evals) {
+    const double s_c = std::sqrt((1.0 - c) * (1.0 + c));
+    const double a = c * cos_h, b = s_c * sin_h;
+    const double sin_t = s_c / f.eta;
+    const double at = cos_t * cos_h, bt = sin_t * sin_h;
+    // mu_o > 0 for psi < psi_o = acos(-a / b); reflection for psi in
+    // (psi_r, psi_o), psi_r = acos(a / b); refraction for psi < psi_t =
+    // acos(-at / bt) as well (from outside always, so psi_t = psi_o).
+    const double r = b > 0.0 ? a / b : HUGE_VAL;
+    const double psi_o = r < 1.0 ? kPi - acos_clamped(r) : kPi;
+    const double psi_r = r < 1.0 ? acos_clamped(r) : 0.0;
+    double psi_t = psi_o;
+    if (refracts && bt > 0.0 && at / bt < r) psi_t = std::min(psi_o, acos_clamped(-at / bt));
+    std::array<double, 4> ps{0.0, psi_r, refracts ? psi_t : psi_r, psi_o};
+    std::sort(ps.begin(), ps.end());
+    const int n = static_cast<int>(std::unique(ps.begin(), ps.end()) - ps.begin());
+    if (n < 2) return {0.0, 0.0, 0.0};
+    AdaptiveOptions opt;
+    opt.abs_tol = tol / (n - 1);
+    opt.controlled = 2;
+    opt.max_intervals = 200;
+    opt.rule = KronrodRule::k31;
+    std::array<double, 3> out{};
+    for (int j = 1; j < n; ++j) {
+        const double p0 = ps[static_cast<std::size_t>(j) - 1], len = ps[static_cast<std::size_t>(j)] - p0;
+        if (!(len > 0.0)) continue;
+        const Estimate<2> e = integrate_adaptive<2>(
+            [&](double u) {
+                // Analytic up to both ends (even at 0 and pi; G2 analytic in
+                // mu down to mu = 0 where a domain ends): no change of variable.
+                const double cp = std::cos(p0 + len * u);
+                const double jac = len;
+                const double mu_o = a + b * cp;
+                std::array<double, 2> y{0.0, 0.0};
+                if (!(mu_o > 0.0) || !(jac > 0.0)) return y;
+                const double mu_i = a - b * cp;
+                if (mu_i > 0.0) y[0] = f.ggx.G2(mu_o, mu_i, f.vis) * jac;
+                if (refracts) {
+                    const double mu_t = at + bt * cp;
+                    if (mu_t > 0.0) y[1] = f.ggx.G2(mu_o, mu_t, f.vis) * jac;
+                }
+                return y;
+            },
+            0.0, 1.0, opt);
+        out[0] += e.value[0];
+        out[1] += e.value[1];
+        out[2] += e.error[0] + e.error[1];
+        *evals += e.evaluations;
+    }
+    return out;
+}
+
+// Integral over c in [0, 1] at fixed theta_h of c {F K_R, (1 - F) K_T}
+// (K the psi integrals over [0, pi]) and its error estimate.
+std::array<double, 3> c_integral(const AverageIntegrand& f, double cos_h, double sin_h, double tol,
+                                 long long* evals) {
+    // Break points: sin(theta_h), where the reflection domain (and from
+    // outside the refraction one) stops being the whole circle; the critical
+    // c; and from inside sqrt(1 - eta^2 cos^2(theta_h)), where the refracted
+    // ray at psi = pi reaches the horizon.
+    std::array<double, 5> cs{};
+    int n = 0;
+    cs[n++] = 0.0;
+    cs[n++] = 1.0;
+    if (sin_h > 0.0 && sin_h < 1.0) cs[n++] = sin_h;
+    if (f.c_crit > 0.0) {
+        cs[n++] = f.c_crit;
+        const double q = f.eta * cos_h;
+        cs[n++] = std::sqrt((1.0 - q) * (1.0 + q));
+    }
+    std::sort(cs.begin(), cs.begin() + n);
+    n = static_cast<int>(std::unique(cs.begin(), cs.begin() + n) - cs.begin());
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.5 * tol / (n - 1);
+    opt.controlled = 2;
+    opt.max_intervals = 200;
+    opt.rule = KronrodRule::k31;
+    const double inner_budget = 0.5 * tol / (n - 1);
+    std::array<double, 3> out{};
+    for (int j = 1; j < n; ++j) {
+        const double c0 = cs[static_cast<std::size_t>(j) - 1], len = cs[static_cast<std::size_t>(j)] - c0;
+        if (!(len > 0.0)) continue;
+        long long inner = 0;
+        const Estimate<3> e = integrate_adaptive<3>(
+            [&](double u) -> std::array<double, 3> {
+                const double c = c0 + len * smoothstep(u);
+                const double w = c * len * smoothstep_slope(u);
+                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
+                const std::array<double, 3> fr = f.fresnel(c);
+                const bool refracts = fr[1] > 0.0;
+                const std::array<double, 3> k = psi_integral(f, cos_h, sin_h, c, fr[2], refracts,
+                                                             std::min(kMaxInnerRel * kPi, inner_budget / w), &inner);
+                return {w * fr[0] * k[0], w * fr[1] * k[1], w * k[2]};
+            },
+            0.0, 1.0, opt);
+        out[0] += e.value[0];
+        out[1] += e.value[1];
+        out[2] += e.error[0] + e.error[1] + e.value[2];
+        *evals += e.evaluations + inner;
+    }
+    return out;
+}
+
+}  // namespace
+
+Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
+    Estimate<2> out;
+    if (!(eta > 0.0)) return out;
+    if (!(alpha > 0.0)) return ggx_glass_average_over_mu(alpha, eta, vis, abs_tol);
+    const AverageIntegrand f(alpha, vis, eta);
+    // x = ln(tan(theta_h) / alpha) as in ggx_glass, split at +-kTailX and,
+    // inside, where sin(theta_h) reaches the critical c; the first and the
+    // last segment over v = e^(-|x|).
+    std::vector<double> xs{-HUGE_VAL, -kTailX, kTailX, HUGE_VAL};
+    if (f.c_crit > 0.0) xs.push_back(std::log(f.c_crit / std::sqrt((1.0 - f.c_crit) * (1.0 + f.c_crit)) / alpha));
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    const int segments = static_cast<int>(xs.size()) - 1;
+    AdaptiveOptions outer_opt;
+    outer_opt.abs_tol = 0.3 * abs_tol / segments;
+    outer_opt.controlled = 2;
+    outer_opt.rule = KronrodRule::k31;
+    outer_opt.max_intervals = 400;
+    const double inner_budget = 0.3 * abs_tol / segments;
+    for (int s = 0; s < segments; ++s) {
+        const double xa = xs[static_cast<std::size_t>(s)], xb = xs[static_cast<std::size_t>(s) + 1];
+        const int side = s == 0 ? -1 : s == segments - 1 ? 1 : 0;
+        const double y0 = side == 0 ? xa : side < 0 ? std::exp(xa) : std::exp(-xb);
+        const double len = (side == 0 ? xb : side < 0 ? std::exp(xb) : std::exp(-xa)) - y0;
+        const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
+        long long inner = 0;
+        const Estimate<3> e = integrate_adaptive_panels<3>(
+            [&](double u) -> std::array<double, 3> {
+                const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
+                // The measure D(h) dw_h with the azimuth of h integrated out is
+                // (1/2) sech^2(x) dx / cos(theta_h); with 1/pi and the two
+                // halves of psi: sech^2(x) / (pi cos(theta_h)) dx.
+                double w, t;
+                if (side == 0) {
+                    const double ch = std::cosh(y);
+                    w = 1.0 / (ch * ch) * kInvPi * dy;
+                    t = alpha * std::exp(y);
+                } else {
+                    if (!(y > kSmallestV)) return {0.0, 0.0, 0.0};
+                    w = 4.0 * y / ((1.0 + y * y) * (1.0 + y * y)) * kInvPi * dy;
+                    t = side < 0 ? alpha * y : alpha / y;
+                }
+                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
+                const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
+                w /= cos_h;
+                const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
+                std::array<double, 3> r = c_integral(f, cos_h, sin_h, tol, &inner);
+                for (double& v : r) v *= w;
+                return r;
+            },
+            0.0, 1.0, panels, outer_opt);
+        for (int c = 0; c < 2; ++c) {
+            out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
+            out.error[static_cast<std::size_t>(c)] += 2.0 * e.error[static_cast<std::size_t>(c)] + e.value[2];
+        }
+        out.evaluations += e.evaluations + inner;
     }
     return out;
 }
