@@ -20,6 +20,15 @@ struct FurnaceModel {
     bool kulla_conty = false; // add the Kulla-Conty multiple-scattering lobe
     bool conserves = false;   // meant to return exactly 1
     double tolerance = 0.0;   // allowed |E - 1| when it conserves
+    int channel = 0;          // the table channel that holds the albedo
+    // Axes held at one value (name, value), e.g. the index of refraction of
+    // the glass tables: the report spans cos_theta and one parameter.
+    std::vector<std::pair<std::string, double>> fixed = {};
+    // Scale E by 1 / E' where E' is the catalogue's table at its default size
+    // and float storage, looked up (multi)linearly at the same point, as a
+    // renderer that compensates the energy loss with the table does (Cycles'
+    // glass). The result is white up to the table's interpolation error.
+    bool compensated = false;
 };
 
 const std::vector<FurnaceModel>& furnace_models();

@@ -6,10 +6,17 @@
 #include "brdflut/error.h"
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
+#include "brdflut/exr.h"
+#include "brdflut/lut.h"
 #include "brdflut/quadrature.h"
 
 namespace brdflut {
 namespace {
+
+// Allowed |E / E' - 1| of the compensated glass: the trilinear interpolation
+// error of the 16^3 table, 5.7e-2 at worst on a 32^2 grid (mu = 1/64, alpha =
+// 0.91), well below 1e-2 away from grazing view.
+constexpr double kGlassCompensationTolerance = 0.1;
 
 std::vector<FurnaceModel> build() {
     const std::pair<std::string, std::string> hc{"visibility", "height_correlated"}, sep{"visibility", "separable"};
@@ -29,7 +36,77 @@ std::vector<FurnaceModel> build() {
          "fujii_oren_nayar_albedo_avg", {}, false, false, 0},
         {"eon", "EON, energy-preserving Oren-Nayar (Portsmouth et al. 2025)", "eon_albedo", "eon_albedo_avg", {}, false,
          true, 1e-6},
+        {"ggx_glass", "GGX rough glass (Walter 2007) at n = 1.5 from outside: E_R + E_T, single scattering",
+         "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
+        {"ggx_glass_inside", "GGX rough glass at n = 1.5 from inside (eta = 1/n): E_R + E_T, single scattering",
+         "ggx_glass_albedo_inside", "ggx_glass_albedo_avg_inside", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
+        // The interpolation error of the 16^3 table peaks at grazing view
+        // and small roughness, where E(mu) turns fastest.
+        {"ggx_glass_compensated",
+         "GGX rough glass at n = 1.5 from outside, E scaled by 1 / E from the default 16^3 table (Cycles' "
+         "compensation of untinted glass)",
+         "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, true, kGlassCompensationTolerance, 2,
+         {{"ior", 1.5}}, true},
     };
+}
+
+// The settings of a furnace table: the grid of the report (size points on
+// each free axis) or the table's default (size 0), the fixed axes at one
+// value each, the model options.
+TableSettings furnace_settings(const TableDefinition& def, const FurnaceModel& model, int size) {
+    TableSettings s = default_settings(def);
+    for (std::size_t a = 0; a < s.axes.size(); ++a) {
+        Axis& ax = s.axes[a];
+        bool fixed = false;
+        for (const auto& [name, v] : model.fixed)
+            if (ax.name == name) {
+                // One texel at v: the centre of [v - d, v + d], linear.
+                const AxisSpec& spec = def.axes[a];
+                const double d = std::min(v - spec.domain_min, spec.domain_max - v);
+                if (!(d > 0.0)) throw Error("furnace model '" + model.id + "': " + name + " = " + std::to_string(v) +
+                                            " is outside the axis' allowed range");
+                ax = Axis{ax.name, v - std::min(d, 1.0), v + std::min(d, 1.0), 1, Placement::center, Warp::linear};
+                fixed = true;
+            }
+        if (!fixed && size > 0) ax.count = size;
+    }
+    for (const auto& [k, v] : model.params) s.params[k] = v;
+    return s;
+}
+
+// One channel of a table, texel by texel.
+std::vector<double> channel_of(const Table& t, int channel) {
+    std::vector<double> out(t.texel_count());
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = t.at(k, channel);
+    return out;
+}
+
+// Divides each value of `exact` (on its own grid) by the table at its
+// default size, stored in float and looked up at the same parameters.
+void compensate(std::vector<double>& values, const Table& exact, const TableDefinition& def,
+                const FurnaceModel& model, int threads) {
+    LutDescription d;
+    d.def = &def;
+    d.settings = furnace_settings(def, model, 0);
+    GenerateOptions g;
+    g.threads = threads;
+    const Table shipped = generate(def, d.settings, g);
+    ExrImage img;
+    img.width = shipped.width();
+    img.height = shipped.height();
+    img.channel_names = shipped.channels;
+    img.pixels.resize(shipped.values.size());
+    for (std::size_t k = 0; k < img.pixels.size(); ++k) img.pixels[k] = static_cast<float>(shipped.values[k]);
+    const std::size_t n = exact.texel_count();
+    for (std::size_t k = 0; k < n; ++k) {
+        std::vector<double> params;
+        std::size_t rest = k;
+        for (const Axis& a : exact.axes) {
+            params.push_back(a.value(static_cast<int>(rest % static_cast<std::size_t>(a.count))));
+            rest /= static_cast<std::size_t>(a.count);
+        }
+        values[k] /= sample_lut(img, d, params, model.channel);
+    }
 }
 
 // 2 * integral of (1 - E(mu)) mu dmu by composite Gauss-Legendre on panels
@@ -73,23 +150,23 @@ FurnaceReport run_furnace(const FurnaceModel& model, const FurnaceOptions& opt) 
     rep.tolerance = opt.tolerance >= 0 ? opt.tolerance : model.tolerance;
 
     const TableDefinition& def = find_table(model.albedo_table);
-    TableSettings s = default_settings(def);
-    for (Axis& a : s.axes) a.count = opt.size;
-    for (const auto& [k, v] : model.params) s.params[k] = v;
+    const TableSettings s = furnace_settings(def, model, opt.size);
     GenerateOptions g;
     g.threads = opt.threads;
     const Table e = generate(def, s, g);
     rep.axes = e.axes;
-    rep.albedo = e.values;
+    rep.albedo = channel_of(e, model.channel);
+    if (model.compensated) compensate(rep.albedo, e, def, model, opt.threads);
     const int nx = e.axes[0].count;
     const int ny = e.axes.size() > 1 ? e.axes[1].count : 1;
 
     if (!model.average_table.empty()) {
         const TableDefinition& adef = find_table(model.average_table);
-        TableSettings as = default_settings(adef);
+        TableSettings as = furnace_settings(adef, model, 0);
         as.axes[0] = s.axes[1];
-        for (const auto& [k, v] : model.params) as.params[k] = v;
-        rep.averages = generate(adef, as, g).values;
+        const Table avg = generate(adef, as, g);
+        rep.averages = channel_of(avg, model.channel);
+        if (model.compensated) compensate(rep.averages, avg, adef, model, opt.threads);
     } else {
         // A 1-D albedo table: its average 2 * integral of E(mu) mu dmu, by
         // adaptive quadrature over the table's own evaluator.
