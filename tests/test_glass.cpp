@@ -176,6 +176,21 @@ TEST(GlassIntegrals, AveragesAgreeWithTheIntegralOverMuOfTheDirectionalAlbedo) {
     }
 }
 
+TEST(GlassIntegrals, AverageErrorEstimatesAreNeverBelowTheActualError) {
+    // At a loose tolerance, where the errors are large enough to see, against
+    // a run 1e3 times tighter.
+    for (double eta : {1.5, 1.0 / 1.5, 3.0, 1.0 / 1.02})
+        for (double alpha : {0.002, 0.1, 0.6, 1.0}) {
+            const Estimate<2> a = ggx_glass_average(alpha, eta, kHc, 1e-6);
+            const Estimate<2> b = ggx_glass_average(alpha, eta, kHc, 1e-9);
+            for (std::size_t k = 0; k < 2; ++k) {
+                EXPECT_LE(std::abs(a.value[k] - b.value[k]), a.error[k] + b.error[k])
+                    << "eta " << eta << " alpha " << alpha << " channel " << k;
+                EXPECT_LE(a.error[k], 1e-6);
+            }
+        }
+}
+
 TEST(GlassIntegrals, AgreesWithMonteCarloWithinFourStandardErrors) {
     struct Case {
         double mu, alpha, eta;

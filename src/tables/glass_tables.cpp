@@ -19,10 +19,12 @@ const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), split "
     "where a threshold of wo.h (reflection above the horizon, refraction below it, the critical "
     "angle, wo.h = 0) meets phi = 0 or pi and at x = +-1, from panels of at most 8 units of x, the "
-    "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each piece; nested with phi split at the same thresholds and adaptive "
-    "Gauss-Kronrod (7,15) under that map on each piece; E_avg: adaptive Gauss-Kronrod (7,15) in mu "
-    "split at alpha and, inside, at the critical cosine and at mu = eta; error per value: QUADPACK estimate plus the "
-    "integrated inner estimates";
+    "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
+    "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (7,15) under "
+    "that map on each piece; E_avg: the same x, then c = wo.h by adaptive Gauss-Kronrod (15,31) "
+    "split at sin(theta_h), the critical c and, inside, sqrt(1 - eta^2 cos^2(theta_h)), then the "
+    "azimuth of wo about h by adaptive Gauss-Kronrod (15,31) over its closed-form domains; error per "
+    "value: QUADPACK estimate plus the integrated inner estimates";
 const char* kMcSampler = "GGX visible normals (Heitz 2018), both channels from each normal";
 
 }  // namespace
