@@ -4,6 +4,7 @@
 //
 //   brdflut_table_report [--threads N] [--quality draft|default|reference]
 //                        [--no-reference] [--no-mc] [--mc-samples M]
+//                        [--tables ID,ID,...]   (only these; implies --no-mc)
 //
 // 1. Generates every table of the catalogue in catalogue order in one process
 //    (as `brdflut generate --all` does; ggx_albedo reuses ggx_dfg's split sums)
@@ -32,6 +33,8 @@
 #include <cstdlib>
 #include <ctime>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -116,6 +119,7 @@ int main(int argc, char** argv) {
     long long mc_samples = 16384;
     bool mc = true, with_reference = true;
     Quality quality = Quality::standard;
+    std::set<std::string> only;
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
         auto next = [&]() -> const char* {
@@ -130,10 +134,22 @@ int main(int argc, char** argv) {
         else if (arg == "--no-reference") with_reference = false;
         else if (arg == "--no-mc") mc = false;
         else if (arg == "--mc-samples") mc_samples = std::max(1024LL, std::atoll(next()));
-        else {
+        else if (arg == "--tables") {
+            std::stringstream list(next());
+            for (std::string id; std::getline(list, id, ',');) {
+                try {
+                    find_table(id);
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "--tables: %s\n", e.what());
+                    return 2;
+                }
+                only.insert(id);
+            }
+            mc = false;
+        } else {
             std::fprintf(stderr,
                          "usage: brdflut_table_report [--threads N] [--quality Q] [--no-reference] "
-                         "[--no-mc] [--mc-samples M]\n");
+                         "[--no-mc] [--mc-samples M] [--tables ID,...]\n");
             return 2;
         }
     }
@@ -147,6 +163,7 @@ int main(int argc, char** argv) {
     double total = 0.0, total_cpu = 0.0;
     const auto t_all = std::chrono::steady_clock::now();
     for (const TableDefinition& d : catalogue()) {
+        if (!only.empty() && !only.count(d.id)) continue;
         runs.push_back(timed_generate(d.id, Method::quadrature, quality, 0, threads));
         total += runs.back().seconds;
         total_cpu += runs.back().cpu_seconds;
