@@ -66,8 +66,7 @@ const std::vector<WarpDef> kWarps = {
          if (lo == hi) return "range " + number(lo) + ":" + number(hi) + " is empty; min and max must differ";
          return {};
      },
-     "(sqrt(max((v - 1.0) / (v + 1.0), 0.0)) - sqrt((lo - 1.0) / (lo + 1.0))) / "
-     "(sqrt((hi - 1.0) / (hi + 1.0)) - sqrt((lo - 1.0) / (lo + 1.0)))"},
+     "(sqrt(max((v - 1.0) / (v + 1.0), 0.0)) - lo) / (hi - lo)", ior_z},
 };
 
 }  // namespace

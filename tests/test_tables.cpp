@@ -127,14 +127,21 @@ TEST(Quality, IsRecordedAndSetsTheToleranceAndDraftEstimatesAreHonest) {
         const double standard = t.at(Quality::standard).method.at("abs_tolerance");
         const double reference = t.at(Quality::reference).method.at("abs_tolerance");
         EXPECT_GT(draft, standard) << id;
-        EXPECT_LE(standard, 1e-8) << id;
-        EXPECT_LE(reference, 1e-12) << id;
+        // The default keeps every stored float within 1e-7 of the exact
+        // value, with half a float step (3e-8 below 1) on top: at most 5e-8
+        // (most tables ask for 1e-8, the glass tables 2e-8).
+        EXPECT_LE(standard, 5e-8) << id;
+        // The reference is at least 50 times tighter, so that it can judge
+        // the default's errors (most 1e-12, the glass tables 1e-10).
+        EXPECT_LE(reference, 0.02 * standard) << id;
         EXPECT_LT(reference, standard) << id;
         const Table& ref = t.at(Quality::reference);
         for (Quality q : {Quality::draft, Quality::standard}) {
             const Table& a = t.at(q);
             for (std::size_t n = 0; n < a.values.size(); ++n) {
-                EXPECT_LE(std::abs(a.values[n] - ref.values[n]), a.errors[n] + 1e-14)
+                // Both are estimates of the same integral: their difference is
+                // covered by the sum of their errors.
+                EXPECT_LE(std::abs(a.values[n] - ref.values[n]), a.errors[n] + ref.errors[n] + 1e-14)
                     << id << " " << to_string(q) << " value " << n;
                 EXPECT_LE(a.errors[n], to_string(q) == "draft" ? draft : standard) << id << " " << n;
             }

@@ -45,8 +45,11 @@ struct WarpDef {
     // Empty when min and max are a valid range for the warp, else why not.
     std::string (*range_problem)(double min, double max);
     // The inverse as one expression valid in GLSL and HLSL alike, of `v`
-    // (the clamped parameter, a float), `lo` (min) and `hi` (max).
+    // (the clamped parameter, a float), `lo` and `hi`: min and max, or, when
+    // shader_bound is set, shader_bound(min) and shader_bound(max) (finite
+    // where the range is not: ior_z's z(inf) = 1).
     const char* shader_u;
+    double (*shader_bound)(double) = nullptr;
 };
 
 const std::vector<WarpDef>& warps();

@@ -70,9 +70,10 @@ struct TableDefinition {
     // The engine preset the table belongs to (`generate --preset NAME`); empty
     // for the default set that `generate --all` writes.
     std::string preset;
-    // Whether `identify` searches this table. Tables fitted per texel (the
-    // LTC fits, milliseconds a texel) are left out: tabulating them for the
-    // coarse search would cost more than the rest of the catalogue together.
+    // Whether `identify` searches this table. Tables that cost milliseconds
+    // a texel (the LTC fits; the glass averages, a 3-D integral each) are
+    // left out: tabulating them for the coarse search would cost more than
+    // the rest of the catalogue together.
     // `compare --as` still checks a file against them.
     bool searched_by_identify = true;
     // How the generated shader lookup function (brdflut/shader.h) returns

@@ -399,11 +399,24 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
           << ax.name << " = " << warp.formula << ", min = " << literal(ax.min) << ", max = " << literal(ax.max);
         if (ax.has_clamp()) o << ", clamped to [" << literal(ax.clamp_lo) << ", " << literal(ax.clamp_hi) << "]";
         o << "\n";
-        o << "    const float " << lo << " = " << literal(ax.min) << ";\n";
-        o << "    const float " << hi << " = " << literal(ax.max) << ";\n";
-        // lowest() and highest(): the range with the axis' clamps applied.
-        o << "    float " << v << " = clamp(" << p << ", " << literal(ax.lowest()) << ", " << literal(ax.highest())
-          << ");  // the parameters the texels cover\n";
+        if (warp.shader_bound) {
+            o << "    const float " << lo << " = " << literal(warp.shader_bound(ax.min)) << ";  // " << warp.name
+              << " of min\n";
+            o << "    const float " << hi << " = " << literal(warp.shader_bound(ax.max)) << ";  // " << warp.name
+              << " of max\n";
+        } else {
+            o << "    const float " << lo << " = " << literal(ax.min) << ";\n";
+            o << "    const float " << hi << " = " << literal(ax.max) << ";\n";
+        }
+        // lowest() and highest(): the range with the axis' clamps applied
+        // (an infinite end, which float has but GLSL cannot spell, clamps nothing).
+        const double low = ax.lowest(), high = ax.highest();
+        o << "    float " << v << " = ";
+        if (std::isinf(high) && std::isinf(low)) o << p;
+        else if (std::isinf(high)) o << "max(" << p << ", " << literal(low) << ")";
+        else if (std::isinf(low)) o << "min(" << p << ", " << literal(high) << ")";
+        else o << "clamp(" << p << ", " << literal(low) << ", " << literal(high) << ")";
+        o << ";  // the parameters the texels cover\n";
         o << "    float " << u << " = " << substitute(warp.shader_u, v, lo, hi) << ";  // inverse warp\n";
         o << "    float " << kCoord[a] << " = ";
         if (ax.placement == Placement::center && ax.shift == 0.0) {

@@ -112,6 +112,7 @@ TableDefinition make(Kind kind, bool inside, std::string id, std::string descrip
                   "E_R + E_T"};
     d.options = {tables::glass_visibility_option()};
     d.supports_monte_carlo = true;
+    d.searched_by_identify = kind != Kind::average;  // see catalogue.h
     d.prepare = [kind, inside](const TableSettings& s) {
         const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
         PreparedTable p;

@@ -222,6 +222,7 @@ TableDefinition make(Entry e) {
     d.axes = e.axes;
     d.channels = e.channels;
     d.supports_monte_carlo = true;
+    d.searched_by_identify = e.kind != Kind::cycles_glass_e_avg && e.kind != Kind::cycles_glass_inv_e_avg;
     d.preset = e.preset;
     nlohmann::json model = e.model;
     model["preset"] = e.preset;
