@@ -80,9 +80,17 @@ struct GlassIntegrand {
     double k;       // 1 - eta^2 (> 0: total internal reflection possible)
     double c_crit;  // sqrt(k), or 0
 
+    // From outside with eta near 1, sqrt(eta^2 - 1) when below 0.1, else 0:
+    // cos_t = sqrt(c^2 + eta^2 - 1) / eta, so F rises from 0 to 1 as c falls
+    // below it, a layer as thin as this c (2e-4 at eta = 1 + 2e-8) that the
+    // rules would not see unless it is a break point (their estimates were
+    // found up to 2.7 times low there). Wider, the rules resolve it.
+    double c_knee;
+
     GlassIntegrand(double alpha, Visibility v, double mu, double e)
         : ggx{alpha}, vis(v), mu_o(mu), sin_o(safe_sqrt(1.0 - mu * mu)), eta(e), k(1.0 - e * e),
-          c_crit(e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0) {}
+          c_crit(e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0),
+          c_knee(e > 1.0 && (e - 1.0) * (e + 1.0) < 0.01 ? std::sqrt((e - 1.0) * (e + 1.0)) : 0.0) {}
 
     Ring ring(double t) const {
         const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
@@ -152,7 +160,7 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
         if (c == c_r) return cos_r;
         return std::clamp((c - q.a0) / q.a1, -1.0, 1.0);
     };
-    for (double b : {c_r, c_t, f.c_crit})
+    for (double b : {c_r, c_t, f.c_crit, f.c_knee})
         if (b > lo && b < c_max) cs[n++] = cos_phi(b);
     cs[n++] = lo == c_min ? -1.0 : cos_phi(lo);
     for (int i = 1; i < n; ++i)  // insertion sort, descending
@@ -211,6 +219,12 @@ std::vector<double> outer_breaks(const GlassIntegrand& f) {
         add_theta(theta_c - theta_o);
         if (sin_o > f.eta) add_theta(std::atan((sin_o - f.eta) / mu_o));
         if (mu_o < f.c_crit) add_theta(std::acos(mu_o / f.c_crit));
+    }
+    if (f.c_knee > 0.0) {  // where c = c_knee meets the ends of the ring
+        const double theta_k = std::acos(f.c_knee);
+        add_theta(theta_o + theta_k);
+        add_theta(theta_o - theta_k);
+        add_theta(theta_k - theta_o);
     }
     return ts;
 }
