@@ -18,7 +18,8 @@ static_assert(tables::kGlassTolerances.standard == kGlassTableTolerance);
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), split "
     "where a threshold of wo.h (reflection above the horizon, refraction below it, the critical "
-    "angle, wo.h = 0) meets phi = 0 or pi and at x = +-1, from panels of at most 8 units of x, the "
+    "angle, wo.h = 0) meets phi = 0 or pi or another threshold, and at x = +-1, from panels of at "
+    "most 8 units of x, the "
     "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
     "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (7,15) under "
     "that map on each piece; E_avg: the same x, then c = wo.h by adaptive Gauss-Kronrod (15,31) "
