@@ -89,6 +89,7 @@ public:
         TexelValue out;
         out.value = {e.value[0], e.value[1], e.value[0] + e.value[1], 0.0};
         out.error = {scale * e.error[0], scale * e.error[1], scale * (e.error[0] + e.error[1]), 0.0};
+        out.evaluations = e.evaluations;
         return out;
     }
 

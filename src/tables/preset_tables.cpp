@@ -96,6 +96,7 @@ public:
                                                 tables::kGlassTolerances.at(quality_));
                 out.value[0] = e.value[0] + e.value[1];
                 out.error[0] = scale() * (e.error[0] + e.error[1]);
+                out.evaluations = e.evaluations;
                 break;
             }
             case Kind::cycles_glass_e_avg:
@@ -106,6 +107,7 @@ public:
                                                         tables::kGlassTolerances.at(quality_));
                 out.value[0] = e.value[0] + e.value[1];
                 out.error[0] = scale() * (e.error[0] + e.error[1]);
+                out.evaluations = e.evaluations;
                 break;
             }
             case Kind::gltf_charlie: {
