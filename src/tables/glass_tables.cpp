@@ -26,7 +26,10 @@ const char* kQuadratureRule =
     "split at sin(theta_h), the critical c and, inside, sqrt(1 - eta^2 cos^2(theta_h)), then the "
     "azimuth of wo about h by adaptive Gauss-Kronrod (15,31) over its closed-form domains; error per "
     "value: QUADPACK estimate plus the integrated inner estimates";
-const char* kMcSampler = "GGX visible normals (Heitz 2018), both channels from each normal";
+const char* kMcSampler =
+    "mixture of GGX visible normals (Heitz 2018; 0.7), normals logistic in ln(tan(theta_h)/alpha) with "
+    "scale 2 (0.2) and normals with wo.h = u^4 (0.1), both channels from each normal, weighed by the "
+    "mixture's density, the visible normals' density as control variate (regression estimate)";
 
 }  // namespace
 

@@ -239,7 +239,8 @@ TableDefinition make(Entry e) {
         p.method = s.method == Method::monte_carlo
                        ? tables::monte_carlo_method("as the core tables: GGX visible normals (ggx_*), "
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
-                                                    "mixture (sheen_*)", s)
+                                                    "mixture (sheen_*), a defensive mixture of GGX "
+                                                    "visible normals (ggx_glass_*)", s)
                        : tables::quadrature_method(kQuadratureRule,
                                                    (glass ? tables::kGlassTolerances : tables::quadrature_tolerances(kGgxAbsTolerance))
                                                        .at(s.quality));
