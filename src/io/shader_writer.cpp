@@ -46,6 +46,13 @@ std::string literal(double value) {
     return s;
 }
 
+// A number in a comment: a literal, or inf (which GLSL and HLSL cannot spell).
+std::string comment_number(double value) {
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char buf[32];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, value).ptr);
+}
+
 // Words of GLSL or HLSL that a parameter or member must not be named.
 bool reserved(const std::string& s) {
     static const std::set<std::string> words = {
@@ -396,8 +403,10 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
         const WarpDef& warp = warp_def(ax.warp);
         o << "    // " << kCoord[a] << ": " << ax.name << ", " << ax.count << " texels, placement "
           << to_string(ax.placement) << (ax.flip ? ", stored flipped" : "") << ", warp " << warp.name << ": "
-          << ax.name << " = " << warp.formula << ", min = " << literal(ax.min) << ", max = " << literal(ax.max);
-        if (ax.has_clamp()) o << ", clamped to [" << literal(ax.clamp_lo) << ", " << literal(ax.clamp_hi) << "]";
+          << ax.name << " = " << warp.formula << ", min = " << comment_number(ax.min)
+          << ", max = " << comment_number(ax.max);
+        if (ax.has_clamp())
+            o << ", clamped to [" << comment_number(ax.clamp_lo) << ", " << comment_number(ax.clamp_hi) << "]";
         o << "\n";
         if (warp.shader_bound) {
             o << "    const float " << lo << " = " << literal(warp.shader_bound(ax.min)) << ";  // " << warp.name
@@ -418,6 +427,11 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
         else o << "clamp(" << p << ", " << literal(low) << ", " << literal(high) << ")";
         o << ";  // the parameters the texels cover\n";
         o << "    float " << u << " = " << substitute(warp.shader_u, v, lo, hi) << ";  // inverse warp\n";
+        // A warp whose bounds are spelled in its own coordinate (ior_z: n =
+        // 1 + 2e-8 is 1.0 in float, z = 1e-4 is not) clamps there too.
+        if (warp.shader_bound && ax.has_clamp())
+            o << "    " << u << " = clamp(" << u << ", " << literal(ax.u_of_value(low)) << ", "
+              << literal(ax.u_of_value(high)) << ");  // the clamp in " << warp.name << "\n";
         o << "    float " << kCoord[a] << " = ";
         if (ax.placement == Placement::center && ax.shift == 0.0) {
             o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";

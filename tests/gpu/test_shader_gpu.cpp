@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <array>
 #include <random>
 #include <set>
 #include <sstream>
@@ -199,12 +200,15 @@ struct Config {
 };
 
 // Texel value of a file channel at storage indices (ix, iy, iz), clamped.
-double texel(const ExrImage& img, const std::vector<Axis>& axes, int ix, int iy, int c) {
-    ix = std::clamp(ix, 0, axes[0].count - 1);
-    iy = axes.size() > 1 ? std::clamp(iy, 0, axes[1].count - 1) : 0;
+// Texel (i[0], i[1], i[2]) of channel c, each index clamped to its axis (a
+// 3-D table's slices are stacked as rows: row = z * count_y + y).
+double texel(const ExrImage& img, const std::vector<Axis>& axes, const std::array<int, 3>& i, int c) {
+    std::array<std::size_t, 3> k{0, 0, 0};
+    for (std::size_t a = 0; a < axes.size(); ++a)
+        k[a] = static_cast<std::size_t>(std::clamp(i[a], 0, axes[a].count - 1));
+    const std::size_t ny = axes.size() > 1 ? static_cast<std::size_t>(axes[1].count) : 1;
     const std::size_t nc = img.channel_names.size();
-    return img.pixels[(static_cast<std::size_t>(iy) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(ix)) * nc +
-                      static_cast<std::size_t>(c)];
+    return img.pixels[((k[2] * ny + k[1]) * static_cast<std::size_t>(img.width) + k[0]) * nc + static_cast<std::size_t>(c)];
 }
 
 // The parameter the texels cover nearest to v (the axis' range and clamps).
@@ -248,9 +252,15 @@ std::vector<float> random_points(const std::vector<Axis>& axes, const ShaderInte
         for (std::size_t p = 0; p < np; ++p) {
             const Axis& a = axes[static_cast<std::size_t>(axis_of_param[p])];
             const double lo = std::min(a.min, a.max), hi = std::max(a.min, a.max), span = hi - lo;
-            // A log axis is drawn uniform in log, the rest uniform in value.
+            // A log axis is drawn uniform in log, an axis that reaches
+            // infinity (ior to inf) uniform in its warp's coordinate, the rest
+            // uniform in value.
             double v;
-            if (a.warp == Warp::log) {
+            if (!std::isfinite(span)) {
+                std::uniform_real_distribution<double> t(-0.1, 1.0);
+                const double u = t(rng);
+                v = u >= 0.0 ? a.value_at_u(u) : lo + u * (a.value_at_u(0.1) - lo);
+            } else if (a.warp == Warp::log) {
                 std::uniform_real_distribution<double> t(-0.1, 1.1);
                 v = lo * std::pow(hi / lo, t(rng));
             } else {
@@ -276,31 +286,36 @@ std::vector<double> point_params(const std::vector<float>& in, const std::vector
 // and the interpolation error bound of the exact check.
 struct Tolerance {
     double tol = 0, interp = 0;
-    double d1[2] = {0, 0}, d2[2] = {0, 0};  // first and second neighbour differences per axis
+    double d1[3] = {0, 0, 0}, d2[3] = {0, 0, 0};  // first and second neighbour differences per axis
 };
 Tolerance filter_tolerance(const ExrImage& img, const std::vector<Axis>& axes, const std::vector<double>& params,
                            int ci, double we) {
-    std::vector<double> pos(axes.size());
-    for (std::size_t a = 0; a < axes.size(); ++a) pos[a] = position(axes[a], params[a]);
-    const int ix = static_cast<int>(std::floor(pos[0]));
-    const int iy = axes.size() > 1 ? static_cast<int>(std::floor(pos[1])) : 0;
+    const std::size_t na = axes.size();
+    std::array<int, 3> base{0, 0, 0};
+    for (std::size_t a = 0; a < na; ++a) base[a] = static_cast<int>(std::floor(position(axes[a], params[a])));
     Tolerance t;
     double vmax = 0;
-    for (int j = -1; j <= 2; ++j)
-        for (int i = -1; i <= 2; ++i) {
-            const double t0 = texel(img, axes, ix + i, iy + j, ci);
-            vmax = std::max(vmax, std::abs(t0));
-            t.d1[0] = std::max(t.d1[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - t0));
-            t.d2[0] = std::max(t.d2[0], std::abs(texel(img, axes, ix + i + 1, iy + j, ci) - 2 * t0 +
-                                                 texel(img, axes, ix + i - 1, iy + j, ci)));
-            if (axes.size() > 1) {
-                t.d1[1] = std::max(t.d1[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - t0));
-                t.d2[1] = std::max(t.d2[1], std::abs(texel(img, axes, ix + i, iy + j + 1, ci) - 2 * t0 +
-                                                     texel(img, axes, ix + i, iy + j - 1, ci)));
+    // The cell's corners and one texel beyond them on every side: 4 per axis.
+    const int span[3] = {4, na > 1 ? 4 : 1, na > 2 ? 4 : 1};
+    for (int k = 0; k < span[2]; ++k)
+        for (int j = 0; j < span[1]; ++j)
+            for (int i = 0; i < span[0]; ++i) {
+                std::array<int, 3> at = base;
+                const int off[3] = {i - 1, j - 1, k - 1};
+                for (std::size_t a = 0; a < na; ++a) at[a] += off[a];
+                const double t0 = texel(img, axes, at, ci);
+                vmax = std::max(vmax, std::abs(t0));
+                for (std::size_t a = 0; a < na; ++a) {
+                    std::array<int, 3> up = at, down = at;
+                    ++up[a];
+                    --down[a];
+                    const double tu = texel(img, axes, up, ci), td = texel(img, axes, down, ci);
+                    t.d1[a] = std::max(t.d1[a], std::abs(tu - t0));
+                    t.d2[a] = std::max(t.d2[a], std::abs(tu - 2 * t0 + td));
+                }
             }
-        }
     t.tol = 4 * kEps * vmax;
-    for (std::size_t a = 0; a < axes.size(); ++a) {
+    for (std::size_t a = 0; a < na; ++a) {
         t.tol += (we + 8 * kEps * axes[a].count) * t.d1[a];
         // Linear interpolation error h^2 |f''| / 8 with h^2 f'' ~ the
         // second difference; twice that for the variation of f''
@@ -310,7 +325,7 @@ Tolerance filter_tolerance(const ExrImage& img, const std::vector<Axis>& axes, c
         // derivative (sqrt-like at mu = 0, alpha = 0, albedo = 1):
         // linear interpolation of t^p over one cell errs by at most
         // half the difference across it, for any 0 < p.
-        const int i0 = a == 0 ? ix : iy;
+        const int i0 = base[a];
         if (i0 <= 0 || i0 + 1 >= axes[a].count - 1) t.interp += 0.5 * t.d1[a];
     }
     return t;
@@ -422,7 +437,8 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
                     if (!expect_match) break;
                     if (!(diff <= tol)) {
                         ADD_FAILURE() << si.function << " field " << si.fields[c] << " at point " << k << ": gpu "
-                                      << gpu_v << ", sample " << cpu_v << ", |diff| " << diff << " > tolerance " << tol;
+                                      << gpu_v << ", sample " << cpu_v << ", |diff| " << diff << " > tolerance " << tol
+                                      << "; params " << params[0] << ", " << params.back();
                         return;
                     }
                     e.worst_ratio_sample = std::max(e.worst_ratio_sample, tol > 0 ? diff / tol : 0.0);
@@ -442,7 +458,7 @@ void check_config(const Config& cfg, int points, std::uint32_t seed, const std::
                                       << gpu_v << ", exact " << want << ", |diff| " << ex << " > error bound "
                                       << bound << " + interpolation " << interp << "; params " << params[0] << ", "
                                       << params.back() << " pos " << pos[0] << ", " << pos.back() << " d2 " << tt.d2[0]
-                                      << ", " << tt.d2[1];
+                                      << ", " << tt.d2[1] << ", " << tt.d2[2];
                         return;
                     }
                     e.vs_exact = std::max(e.vs_exact, ex);
