@@ -423,7 +423,7 @@ std::array<double, 3> psi_integral(const AverageIntegrand& f, double cos_h, doub
     opt.abs_tol = tol / (n - 1);
     opt.controlled = 2;
     opt.max_intervals = 200;
-    opt.rule = KronrodRule::k31;
+    opt.rule = KronrodRule::k15;
     std::array<double, 3> out{};
     for (int j = 1; j < n; ++j) {
         const double p0 = ps[static_cast<std::size_t>(j) - 1], len = ps[static_cast<std::size_t>(j)] - p0;

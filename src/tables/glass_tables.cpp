@@ -24,7 +24,7 @@ const char* kQuadratureRule =
     "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (7,15) under "
     "that map on each piece; E_avg: the same x, then c = wo.h by adaptive Gauss-Kronrod (15,31) "
     "split at sin(theta_h), the critical c and, inside, sqrt(1 - eta^2 cos^2(theta_h)), then the "
-    "azimuth of wo about h by adaptive Gauss-Kronrod (15,31) over its closed-form domains; error per "
+    "azimuth of wo about h by adaptive Gauss-Kronrod (7,15) over its closed-form domains; error per "
     "value: QUADPACK estimate plus the integrated inner estimates";
 const char* kMcSampler =
     "mixture of GGX visible normals (Heitz 2018; 0.7), normals logistic in ln(tan(theta_h)/alpha) with "
