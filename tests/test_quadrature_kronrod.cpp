@@ -170,3 +170,74 @@ TEST(KronrodRule, PanelSumsGiveTheSameBitsInTheSseAndScalarChannels) {
             EXPECT_EQ(one.error[0], e.error[2]);
         }
 }
+
+TEST(KronrodRule, QK21IsExactToDegree31AndItsEstimateVanishesExactlyToDegree19) {
+    // K21 integrates x^k exactly for k <= 3*10 + 1; the embedded G10 (no
+    // node at 0) for k <= 19, so the estimate from |K21 - G10| vanishes there
+    // (down to the rounding floor) and not at degree 20 and up.
+    for (int k = 0; k <= 31; ++k) {
+        auto f = [k](double x) { return std::array<double, 1>{std::pow(x, k)}; };
+        const auto p = detail::kronrod_panel<1>(f, -1.0, 1.0, 1, KronrodRule::k21);
+        const double exact = k % 2 == 1 ? 0.0 : 2.0 / (k + 1);
+        EXPECT_NEAR(p.value[0], exact, 1e-14) << "degree " << k;
+        if (k <= 19) {
+            EXPECT_LE(p.error[0], 1e-13) << "degree " << k;
+        } else if (k % 2 == 0) {
+            EXPECT_GT(p.error[0], 1e-10) << "degree " << k;
+        }
+    }
+    // Degree 32 is beyond the Kronrod rule: its value is off.
+    auto f32 = [](double x) { return std::array<double, 1>{std::pow(x, 32)}; };
+    EXPECT_GT(std::abs(detail::kronrod_panel<1>(f32, -1.0, 1.0, 1, KronrodRule::k21).value[0] - 2.0 / 33.0), 1e-12);
+}
+
+TEST(KronrodRule, AdaptiveQK21MatchesClosedFormsWithHonestErrorsAndCountsItsNodes) {
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-11;
+    opt.rule = KronrodRule::k21;
+    const Estimate<1> a = integrate_adaptive<1>(
+        [](double x) { return std::array<double, 1>{std::sqrt(x)}; }, 0.0, 1.0, opt);
+    EXPECT_NEAR(a.value[0], 2.0 / 3.0, a.error[0]);
+    EXPECT_LE(a.error[0], 1e-11);
+    EXPECT_GT(a.evaluations, 21);
+    EXPECT_EQ(a.evaluations % 21, 0);
+    const double w = 1e-3;
+    const Estimate<1> b = integrate_adaptive_panels<1>(
+        [w](double x) { return std::array<double, 1>{w / (x * x + w * w)}; }, -1.0, 2.0, 3, opt);
+    EXPECT_NEAR(b.value[0], std::atan(2.0 / w) + std::atan(1.0 / w), b.error[0]);
+    EXPECT_LE(b.error[0], 1e-11);
+    EXPECT_EQ(b.evaluations % 21, 0);
+}
+
+TEST(KronrodRule, QK21BatchAndChannelsGiveTheSameBitsAsOneNodeAndOneChannel) {
+    // The batch path gets all 21 nodes at once and gives exactly the values
+    // of one node at a time; two channels summed side by side (SSE2) and a
+    // third alone give the same bits as the function on its own.
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-13;
+    opt.rule = KronrodRule::k21;
+    int batches = 0, nodes = 0;
+    const Estimate<1> b = integrate_adaptive<1>(Batched{&batches, &nodes}, -3.0, 5.0, opt);
+    const Estimate<1> s = integrate_adaptive<1>([](double x) { return std::array<double, 1>{1.0 / (1.0 + x * x)}; },
+                                                -3.0, 5.0, opt);
+    EXPECT_EQ(b.value, s.value);
+    EXPECT_EQ(b.error, s.error);
+    EXPECT_EQ(nodes, b.evaluations);
+    EXPECT_EQ(batches * 21, nodes);
+    EXPECT_NEAR(b.value[0], std::atan(5.0) + std::atan(3.0), b.error[0]);
+    for (double tol : {1e-3, 1e-13}) {
+        opt.abs_tol = tol;
+        auto f = [](double x) {
+            const double y = std::exp(-x) / (0.01 + x * x);
+            return std::array<double, 3>{y, y, y};
+        };
+        const Estimate<3> e = integrate_adaptive<3>(f, -0.5, 2.0, opt);
+        EXPECT_EQ(e.value[0], e.value[1]);
+        EXPECT_EQ(e.value[0], e.value[2]);
+        EXPECT_EQ(e.error[0], e.error[2]);
+        const Estimate<1> one = integrate_adaptive<1>(
+            [](double x) { return std::array<double, 1>{std::exp(-x) / (0.01 + x * x)}; }, -0.5, 2.0, opt);
+        EXPECT_EQ(one.value[0], e.value[2]);
+        EXPECT_EQ(one.error[0], e.error[2]);
+    }
+}

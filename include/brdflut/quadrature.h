@@ -1,9 +1,10 @@
 // Deterministic one-dimensional quadrature: Gauss-Legendre rules of any order
-// and a globally adaptive Gauss-Kronrod (7, 15) or (15, 31) integrator for
-// vector-valued integrands.
+// and a globally adaptive Gauss-Kronrod (7, 15), (10, 21) or (15, 31)
+// integrator for vector-valued integrands.
 //
 // Piessens et al. 1983, "QUADPACK: A Subroutine Package for Automatic
-// Integration" (the Kronrod nodes and weights below are those of QK15 and QK31).
+// Integration" (the Kronrod nodes and weights below are those of QK15, QK21
+// and QK31).
 //
 // The adaptive rule is deterministic: the same integrand and tolerances give
 // the same nodes in the same order, so results do not depend on threads.
@@ -41,13 +42,20 @@ struct Estimate {
 };
 
 // The Kronrod rule of a panel: QK15 (Gauss 7) is the default; QK31
-// (Gauss 15) needs fewer panels on smooth integrands at tight tolerances.
-enum class KronrodRule { k15, k31 };
+// (Gauss 15) needs fewer panels on smooth integrands at tight tolerances;
+// QK21 (Gauss 10) lies between, for ranges one QK15 panel cannot resolve to
+// the tolerance and one QK31 panel resolves far beyond it.
+enum class KronrodRule { k15, k21, k31 };
+
+// Nodes per panel of a rule.
+constexpr int kronrod_points(KronrodRule rule) {
+    return rule == KronrodRule::k31 ? 31 : rule == KronrodRule::k21 ? 21 : 15;
+}
 
 namespace detail {
 // Nodes (descending, the last is 0), Kronrod weights, and the weights of the
 // embedded Gauss rule at the odd-indexed nodes (the last at node 0).
-// Values of QUADPACK (QK15, QK31; L. W. Fullerton, 80-digit arithmetic).
+// Values of QUADPACK (QK15, QK21, QK31; L. W. Fullerton, 80-digit arithmetic).
 template <int K>
 struct KronrodNodes;
 template <>
@@ -65,6 +73,29 @@ struct KronrodNodes<15> {
     static constexpr std::array<double, 4> wg = {
         0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
         0.381830050505118944950369775488975, 0.417959183673469387755102040816327};
+};
+template <>
+struct KronrodNodes<21> {
+    static constexpr std::array<double, 11> x = {
+        0.995657163025808080735527280689003, 0.973906528517171720077964012084452,
+        0.930157491355708226001207180059508, 0.865063366688984510732096688423493,
+        0.780817726586416897063717578345042, 0.679409568299024406234327365114874,
+        0.562757134668604683339000099272694, 0.433395394129247190799265943165784,
+        0.294392862701460198131126603103866, 0.148874338981631210884826001129720,
+        0.000000000000000000000000000000000};
+    static constexpr std::array<double, 11> wk = {
+        0.011694638867371874278064396062192, 0.032558162307964727478818972459390,
+        0.054755896574351996031381300244580, 0.075039674810919952767043140916190,
+        0.093125454583697605535065465083366, 0.109387158802297641899210590325805,
+        0.123491976262065851077958109831074, 0.134709217311473325928054001771707,
+        0.142775938577060080797094273138717, 0.147739104901338491374841515972068,
+        0.149445554002916905664936468389821};
+    // Gauss 10 has no node at 0: its weights are those of the odd-indexed
+    // nodes x[1], x[3], .., x[9].
+    static constexpr std::array<double, 5> wg = {
+        0.066671344308688137593568809893332, 0.149451349150580593145776339657697,
+        0.219086362515982043995534934228163, 0.269266719309996355091226921569469,
+        0.295524224714752870173892994651338};
 };
 template <>
 struct KronrodNodes<31> {
@@ -131,7 +162,7 @@ constexpr PanelWeights<K> panel_weights() {
     constexpr int half = K / 2;
     PanelWeights<K> p;
     p.wk[0] = R::wk[half];
-    p.wg[0] = R::wg[half / 2];
+    p.wg[0] = half % 2 == 1 ? R::wg[half / 2] : 0.0;  // QK21: Gauss 10 has no centre
     for (int j = 0; j < half; ++j) {
         p.wk[1 + 2 * j] = p.wk[2 + 2 * j] = R::wk[static_cast<std::size_t>(j)];
         p.wg[1 + 2 * j] = p.wg[2 + 2 * j] = (j % 2 == 1) ? R::wg[static_cast<std::size_t>(j / 2)] : 0.0;
@@ -164,6 +195,86 @@ constexpr GaussNodes<K> gauss_nodes() {
         g.n[static_cast<std::size_t>(m++)] = 2 + 2 * j;
     }
     return g;
+}
+
+// The same sums for QK21 (K = 4 m + 1; Gauss 10 at the pairs j = 1, 3, ..,
+// 9, no centre): Kronrod node n to partial sum n % 4 as above, the Gauss
+// pairs' nodes one to each of two partial sums; the same operations in
+// every channel, with or without SSE2.
+template <std::size_t N>
+void panel_sums_21(const std::array<std::array<double, N>, 21>& y, std::array<double, N>& k,
+                   std::array<double, N>& g, std::array<double, N>& asc) {
+    using R = KronrodNodes<21>;
+    static constexpr PanelWeights<21> W = panel_weights<21>();
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    for (; i + 2 <= N; i += 2) {
+        auto at = [&](int n) { return _mm_loadu_pd(&y[static_cast<std::size_t>(n)][i]); };
+        auto wk = [&](int n) { return _mm_set1_pd(W.wk[static_cast<std::size_t>(n)]); };
+        __m128d k0 = _mm_mul_pd(wk(0), at(0)), k1 = _mm_mul_pd(wk(1), at(1)), k2 = _mm_mul_pd(wk(2), at(2)),
+                k3 = _mm_mul_pd(wk(3), at(3));
+        for (int n = 4; n < 20; n += 4) {
+            k0 = _mm_add_pd(k0, _mm_mul_pd(wk(n), at(n)));
+            k1 = _mm_add_pd(k1, _mm_mul_pd(wk(n + 1), at(n + 1)));
+            k2 = _mm_add_pd(k2, _mm_mul_pd(wk(n + 2), at(n + 2)));
+            k3 = _mm_add_pd(k3, _mm_mul_pd(wk(n + 3), at(n + 3)));
+        }
+        k0 = _mm_add_pd(k0, _mm_mul_pd(wk(20), at(20)));
+        __m128d g0 = _mm_mul_pd(_mm_set1_pd(R::wg[0]), at(3)), g1 = _mm_mul_pd(_mm_set1_pd(R::wg[0]), at(4));
+        for (int j = 3, m = 1; j < 10; j += 2, ++m) {
+            const __m128d w = _mm_set1_pd(R::wg[static_cast<std::size_t>(m)]);
+            g0 = _mm_add_pd(g0, _mm_mul_pd(w, at(1 + 2 * j)));
+            g1 = _mm_add_pd(g1, _mm_mul_pd(w, at(2 + 2 * j)));
+        }
+        const __m128d kv = _mm_add_pd(_mm_add_pd(k0, k1), _mm_add_pd(k2, k3));
+        const __m128d mean = _mm_mul_pd(_mm_set1_pd(0.5), kv);
+        const __m128d sign = _mm_set1_pd(-0.0);
+        auto dev = [&](int n) { return _mm_mul_pd(wk(n), _mm_andnot_pd(sign, _mm_sub_pd(at(n), mean))); };
+        __m128d a0 = dev(0), a1 = dev(1), a2 = dev(2), a3 = dev(3);
+        for (int n = 4; n < 20; n += 4) {
+            a0 = _mm_add_pd(a0, dev(n));
+            a1 = _mm_add_pd(a1, dev(n + 1));
+            a2 = _mm_add_pd(a2, dev(n + 2));
+            a3 = _mm_add_pd(a3, dev(n + 3));
+        }
+        a0 = _mm_add_pd(a0, dev(20));
+        _mm_storeu_pd(&k[i], kv);
+        _mm_storeu_pd(&g[i], _mm_add_pd(g0, g1));
+        _mm_storeu_pd(&asc[i], _mm_add_pd(_mm_add_pd(a0, a1), _mm_add_pd(a2, a3)));
+    }
+#endif
+    for (; i < N; ++i) {
+        auto at = [&](int n) { return y[static_cast<std::size_t>(n)][i]; };
+        auto wk = [&](int n) { return W.wk[static_cast<std::size_t>(n)]; };
+        double k0 = wk(0) * at(0), k1 = wk(1) * at(1), k2 = wk(2) * at(2), k3 = wk(3) * at(3);
+        for (int n = 4; n < 20; n += 4) {
+            k0 += wk(n) * at(n);
+            k1 += wk(n + 1) * at(n + 1);
+            k2 += wk(n + 2) * at(n + 2);
+            k3 += wk(n + 3) * at(n + 3);
+        }
+        k0 += wk(20) * at(20);
+        double g0 = R::wg[0] * at(3), g1 = R::wg[0] * at(4);
+        for (int j = 3, m = 1; j < 10; j += 2, ++m) {
+            const double w = R::wg[static_cast<std::size_t>(m)];
+            g0 += w * at(1 + 2 * j);
+            g1 += w * at(2 + 2 * j);
+        }
+        const double kv = (k0 + k1) + (k2 + k3);
+        const double mean = 0.5 * kv;
+        auto dev = [&](int n) { return wk(n) * std::abs(at(n) - mean); };
+        double a0 = dev(0), a1 = dev(1), a2 = dev(2), a3 = dev(3);
+        for (int n = 4; n < 20; n += 4) {
+            a0 += dev(n);
+            a1 += dev(n + 1);
+            a2 += dev(n + 2);
+            a3 += dev(n + 3);
+        }
+        a0 += dev(20);
+        k[i] = kv;
+        g[i] = g0 + g1;
+        asc[i] = (a0 + a1) + (a2 + a3);
+    }
 }
 
 template <int K, std::size_t N>
@@ -272,7 +383,10 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
         }
     }
     std::array<double, N> k, g, asc;
-    panel_sums<K, N>(y, k, g, asc);
+    if constexpr (K == 21)
+        panel_sums_21<N>(y, k, g, asc);
+    else
+        panel_sums<K, N>(y, k, g, asc);
     Interval<N> r{a, b, {}, {}, 0.0};
     const double abs_h = std::abs(h);
     for (std::size_t i = 0; i < N; ++i) {
@@ -287,8 +401,9 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
 template <std::size_t N, class F>
 Interval<N> kronrod_panel(F& f, double a, double b, std::size_t controlled,
                           KronrodRule rule = KronrodRule::k15) {
-    return rule == KronrodRule::k31 ? kronrod_panel_k<31, N>(f, a, b, controlled)
-                                    : kronrod_panel_k<15, N>(f, a, b, controlled);
+    if (rule == KronrodRule::k31) return kronrod_panel_k<31, N>(f, a, b, controlled);
+    if (rule == KronrodRule::k21) return kronrod_panel_k<21, N>(f, a, b, controlled);
+    return kronrod_panel_k<15, N>(f, a, b, controlled);
 }
 }  // namespace detail
 
@@ -309,7 +424,7 @@ Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOpt
     heap.reserve(std::max(heap.size(), static_cast<std::size_t>(opt.max_intervals)) + 1);
     auto less = [](const Interval<N>& p, const Interval<N>& q) { return p.worst < q.worst; };
     std::make_heap(heap.begin(), heap.end(), less);
-    const int per_panel = opt.rule == KronrodRule::k31 ? 31 : 15;
+    const int per_panel = kronrod_points(opt.rule);
     auto total_error_ok = [&]() {
         std::array<double, N> e{};
         for (const auto& iv : heap)
@@ -360,7 +475,7 @@ Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
     Estimate<N> out;
     if (!(b > a)) return out;
     panels = std::max(panels, 1);
-    const int per_panel = opt.rule == KronrodRule::k31 ? 31 : 15;
+    const int per_panel = kronrod_points(opt.rule);
     out.evaluations = per_panel * panels;
     auto within_tolerance = [&](const std::array<double, N>& e) {
         for (std::size_t i = 0; i < N && i < opt.controlled; ++i)
