@@ -18,8 +18,10 @@
 // are flattened by a change of variable at t_a, where the phi integral
 // behaves like (t - t_a)^(3/2) (and G2 dips where the reflected direction
 // grazes the horizon). The full circle in phi uses the doubling trapezoidal
-// rule (cosines from a table); a clipped range uses Gauss-Kronrod (15, 31)
-// in tan(phi / 2), where the integrand is rational. Each inner integral gets
+// rule (cosines from a table); a clipped range uses Gauss-Kronrod in
+// tan(phi / 2), where the integrand is rational: one (7, 15) or (10, 21)
+// panel where G2's branch points lie far from the arc against its length,
+// else (or when that panel misses the tolerance) adaptive (15, 31). Each inner integral gets
 // the tolerance its outer weight requires (budget / (weight * range)), and
 // its error estimate is integrated along with the values, so the reported
 // error covers both levels. The phi integrands are evaluated four nodes at
@@ -72,6 +74,12 @@ constexpr double kMaxNestedTol = 1e-5;
 // G2 falls from its plateau to 0 as mu_i drops below about alpha; a clipped
 // phi range is cut where mu_i = kDipWidths alpha (see clipped_circle).
 constexpr double kDipWidths = 8.0;
+
+// A clipped arc far inside G2's dip starts from a QK15 panel only when its
+// tolerance is at least this fraction of the size of its integrand (see
+// clipped_circle); below, the 7-point Gauss rule inside QUADPACK's estimate
+// rarely gets there in one panel.
+constexpr double kQk15RelTol = 1e-10;
 
 // A clipped phi range is integrated in s = tan(phi / 2) up to
 // s = kMaxTanHalf, that is for cos(phi_max) >= kSplitCos, and beyond in
@@ -433,16 +441,6 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     auto clipped_circle = [&](double t, double c, double tol) -> std::array<double, 3> {
         using Arc = SplitSumIntegrand::Arc;
         const SplitSumIntegrand::Ring q = f.ring(t);
-        AdaptiveOptions inner_opt;
-        inner_opt.rule = KronrodRule::k31;
-        std::array<double, 3> r{};
-        auto add = [&](auto integrand, double s0, double s1) {
-            const Estimate<2> in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
-            evaluations += in.evaluations;
-            r[0] += in.value[0];
-            r[1] += in.value[1];
-            r[2] += in.error[0] + in.error[1];
-        };
         const bool near_pi = c < kSplitCos;
         // Where mu_i = kDipWidths alpha, when the dip of G2 (mu_i below about
         // alpha, next to phi_max) is narrow against the range, the range is
@@ -452,7 +450,55 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         // c + dip < 0).
         const double dip = kDipWidths * alpha / (q.two_cos_h * q.a1);  // in cos(phi)
         const bool cut = dip < 0.25 * (1.0 - c);
+        AdaptiveOptions inner_opt;
+        inner_opt.rule = KronrodRule::k31;
         inner_opt.abs_tol = cut ? tol / 2 : tol;
+        // The panel each piece starts from. G2's branch points, mu_i =
+        // +-i alpha / sqrt(1 - alpha^2), lie next to the arc's end (mu_i = 0).
+        // An arc that is not cut has mu_i <= mu_max = beta (1 - c) (beta =
+        // 2 cos(theta_h) a1, mu_i = beta (cos(phi) - c)), and reach = dip /
+        // (1 - c) = kDipWidths alpha / mu_max: the larger, the farther the
+        // branch points from the arc against its length, and the fewer nodes
+        // a panel needs. Below kDipWidths / 2 (mu_max above 2 alpha) the arc
+        // starts from a QK31 panel, up to 4 kDipWidths (mu_max down to
+        // alpha / 4) from QK21, beyond from QK15 unless the tolerance is
+        // below kQk15RelTol of the integrand's size. Both pieces of a cut arc
+        // start from QK21. A first panel whose estimate misses the tolerance
+        // is not bisected but replaced by the adaptive QK31 run (its nodes
+        // still counted), so every piece meets its tolerance by QUADPACK's
+        // estimate as before. The generic (Schlick-Smith) visibility keeps
+        // QK31 throughout.
+        KronrodRule first = KronrodRule::k21;
+        if (f.generic_) {
+            first = KronrodRule::k31;
+        } else if (!cut) {
+            const double reach = dip / (1.0 - c);
+            if (reach < 0.5 * kDipWidths)
+                first = KronrodRule::k31;
+            else if (reach >= 4.0 * kDipWidths && inner_opt.abs_tol >= kQk15RelTol * q.scale)
+                first = KronrodRule::k15;
+        }
+        std::array<double, 3> r{};
+        auto add = [&](auto integrand, double s0, double s1) {
+            Estimate<2> in;
+            if (first != KronrodRule::k31) {
+                AdaptiveOptions one = inner_opt;
+                one.rule = first;
+                one.max_intervals = 1;
+                in = integrate_adaptive<2>(integrand, s0, s1, one);
+                if (!(in.error[0] <= inner_opt.abs_tol && in.error[1] <= inner_opt.abs_tol)) {
+                    const int spent = in.evaluations;
+                    in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
+                    in.evaluations += spent;
+                }
+            } else {
+                in = integrate_adaptive<2>(integrand, s0, s1, inner_opt);
+            }
+            evaluations += in.evaluations;
+            r[0] += in.value[0];
+            r[1] += in.value[1];
+            r[2] += in.error[0] + in.error[1];
+        };
         double lo = c;
         if (cut) {
             lo = c + dip;
