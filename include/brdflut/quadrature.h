@@ -383,7 +383,12 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
         }
     }
     std::array<double, N> k, g, asc;
-    if constexpr (K == 21)
+    // An integrand with a member sums(y, k, g, asc) computes the panel sums
+    // itself (to use wider SIMD); it must give exactly the bits of
+    // panel_sums / panel_sums_21 (the same operations in the same order).
+    if constexpr (requires(std::array<double, N>& o) { f.sums(y, o, o, o); })
+        f.sums(y, k, g, asc);
+    else if constexpr (K == 21)
         panel_sums_21<N>(y, k, g, asc);
     else
         panel_sums<K, N>(y, k, g, asc);

@@ -1,7 +1,8 @@
 // Which SIMD width ggx_split_sum evaluates its phi integrands with: 4 (AVX2,
-// when the processor has it), 2 (SSE2) or 1 (one node at a time). Every width
-// computes the same operations in the same order, so the values are the same
-// bits whatever it is; tests set it to check exactly that.
+// when the processor has it), 2 (SSE2) or 1 (one node at a time); at 4 the
+// clipped arcs' Kronrod panel sums use AVX2 too. Every width computes the
+// same operations in the same order, so the values are the same bits
+// whatever it is; tests set it to check exactly that.
 #pragma once
 
 namespace brdflut::detail {

@@ -26,8 +26,9 @@
 // its error estimate is integrated along with the values, so the reported
 // error covers both levels. The phi integrands are evaluated four nodes at
 // a time with AVX2 when the processor has it, else two with SSE2, by exactly
-// the operations of one node at a time (ggx_phi_kernels.inc), so the values
-// do not depend on the machine.
+// the operations of one node at a time (ggx_phi_kernels.inc), and with AVX2
+// the arcs' Kronrod panel sums take two nodes per register by the operations
+// of detail::panel_sums, so the values do not depend on the machine.
 #include "brdflut/ggx_integrals.h"
 
 #include <cmath>
@@ -100,7 +101,33 @@ struct PhiKernels {
     int (*circle)(const PhiConstants&, const double* cos_phi, double* y, int n);
     int (*arc_half)(const PhiConstants&, double a1s, double kj, const double* u, double* y, int n);
     int (*arc_quarter)(const PhiConstants&, double a1s, double kj, const double* u, double* y, int n);
+    // The Kronrod panel sums of two channels (detail::panel_sums,
+    // panel_sums_21: y holds K pairs; k, g, asc get a pair each), or null
+    // where the generic ones are used.
+    using Sums = void (*)(const double* y, double* k, double* g, double* asc);
+    Sums sums15 = nullptr, sums21 = nullptr, sums31 = nullptr;
 };
+
+// The panel weights in node order as plain arrays, for the AVX2 panel sums
+// (which use no library templates; see ggx_phi_kernels.inc).
+template <int K>
+struct SumWeights {
+    double wk[K], wg[K];
+};
+template <int K>
+constexpr SumWeights<K> sum_weights() {
+    constexpr detail::PanelWeights<K> w = detail::panel_weights<K>();
+    SumWeights<K> t{};
+    for (int n = 0; n < K; ++n) {
+        t.wk[n] = w.wk[static_cast<std::size_t>(n)];
+        t.wg[n] = w.wg[static_cast<std::size_t>(n)];
+    }
+    return t;
+}
+template <int K>
+inline constexpr SumWeights<K> kSumWeights = sum_weights<K>();
+// Instantiated here, outside the code compiled for AVX2.
+static_assert(kSumWeights<15>.wk[0] > 0.0 && kSumWeights<21>.wk[0] > 0.0 && kSumWeights<31>.wk[0] > 0.0);
 
 int no_circle(const PhiConstants&, const double*, double*, int) { return 0; }
 int no_arc(const PhiConstants&, double, double, const double*, double*, int) { return 0; }
@@ -170,15 +197,112 @@ inline void store_pairs(double* y, V a, V b) {
     _mm256_storeu_pd(y + 4, _mm256_permute2f128_pd(lo, hi, 0x31));
 }
 #include "integrate/ggx_phi_kernels.inc"
-// Whole vectors of 4, then a pair of 2 (SSE2 rounding is the same).
+
+// detail::panel_sums (K = 15, 31) and panel_sums_21 for two channels, two
+// nodes per register: {k0, k1} and {k2, k3} of the partial sums side by
+// side, each partial sum taking its nodes in the same order by the same
+// operations, so the bits are those of the SSE2 and scalar sums.
+inline __m256d pair_weights(const double* w, int n) { return _mm256_setr_pd(w[n], w[n], w[n + 1], w[n + 1]); }
+inline __m128d lo(__m256d v) { return _mm256_castpd256_pd128(v); }
+inline __m128d hi(__m256d v) { return _mm256_extractf128_pd(v, 1); }
+template <int K>
+void panel_sums2(const double* y, double* k, double* g, double* asc) {
+    constexpr bool k21 = K == 21;  // K = 4 m + 1; else K = 4 m + 3
+    constexpr int groups = (K - 1) / 4;  // whole groups of four nodes after the first
+    const double* wk = kSumWeights<K>.wk;
+    const double* wg = kSumWeights<K>.wg;
+    // 0 + x for the partial sum that starts from 0 (exactly x, also for -0).
+    const __m256d zero_k3 = _mm256_setr_pd(-0.0, -0.0, 0.0, 0.0);
+    auto yy = [y](int n) { return _mm256_loadu_pd(y + 2 * n); };
+    __m256d a = _mm256_mul_pd(pair_weights(wk, 0), yy(0));
+    __m256d b = _mm256_mul_pd(pair_weights(wk, 2), yy(2));
+    if (!k21) b = _mm256_add_pd(b, zero_k3);
+    for (int m = 1; m < groups; ++m) {
+        a = _mm256_add_pd(a, _mm256_mul_pd(pair_weights(wk, 4 * m), yy(4 * m)));
+        b = _mm256_add_pd(b, _mm256_mul_pd(pair_weights(wk, 4 * m + 2), yy(4 * m + 2)));
+    }
+    __m128d k0 = lo(a), k1 = hi(a), k2 = lo(b);
+    const __m128d k3 = hi(b);
+    if (k21) {
+        k0 = _mm_add_pd(k0, _mm_mul_pd(_mm_set1_pd(wk[K - 1]), _mm_loadu_pd(y + 2 * (K - 1))));
+    } else {
+        const int n = 4 * groups;  // K - 3
+        const __m256d last = _mm256_mul_pd(pair_weights(wk, n), yy(n));
+        k0 = _mm_add_pd(k0, lo(last));
+        k1 = _mm_add_pd(k1, hi(last));
+        k2 = _mm_add_pd(k2, _mm_mul_pd(_mm_set1_pd(wk[K - 1]), _mm_loadu_pd(y + 2 * (K - 1))));
+    }
+    const __m128d kv = _mm_add_pd(_mm_add_pd(k0, k1), _mm_add_pd(k2, k3));
+    // Gauss: the pairs of nodes (3, 4), (7, 8), ..; {g1, g0} for K = 4 m + 3
+    // (g0 starting from the centre, g1 from 0), {g0, g1} for QK21.
+    __m256d gr;
+    if (k21) {
+        gr = _mm256_mul_pd(pair_weights(wg, 3), yy(3));
+    } else {
+        const __m128d centre = _mm_mul_pd(_mm_set1_pd(wg[0]), _mm_loadu_pd(y));
+        gr = _mm256_insertf128_pd(_mm256_setzero_pd(), centre, 1);
+        gr = _mm256_add_pd(gr, _mm256_mul_pd(pair_weights(wg, 3), yy(3)));
+    }
+    for (int n = 7; n + 1 < K; n += 4) gr = _mm256_add_pd(gr, _mm256_mul_pd(pair_weights(wg, n), yy(n)));
+    const __m128d gv = k21 ? _mm_add_pd(lo(gr), hi(gr)) : _mm_add_pd(hi(gr), lo(gr));
+    // Sum of |y - mean|, mean = K / 2, in the partial sums of K.
+    const __m128d mean = _mm_mul_pd(_mm_set1_pd(0.5), kv);
+    const __m256d mean2 = _mm256_insertf128_pd(_mm256_castpd128_pd256(mean), mean, 1);
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    auto dev = [&](int n) {
+        return _mm256_mul_pd(pair_weights(wk, n), _mm256_andnot_pd(sign, _mm256_sub_pd(yy(n), mean2)));
+    };
+    __m256d da = dev(0), db = dev(2);
+    if (!k21) db = _mm256_add_pd(db, zero_k3);
+    for (int m = 1; m < groups; ++m) {
+        da = _mm256_add_pd(da, dev(4 * m));
+        db = _mm256_add_pd(db, dev(4 * m + 2));
+    }
+    __m128d a0 = lo(da), a1 = hi(da), a2 = lo(db);
+    const __m128d a3 = hi(db);
+    const __m128d dlast = _mm_mul_pd(_mm_set1_pd(wk[K - 1]),
+                                     _mm_andnot_pd(_mm_set1_pd(-0.0), _mm_sub_pd(_mm_loadu_pd(y + 2 * (K - 1)), mean)));
+    if (k21) {
+        a0 = _mm_add_pd(a0, dlast);
+    } else {
+        const __m256d d = dev(4 * groups);
+        a0 = _mm_add_pd(a0, lo(d));
+        a1 = _mm_add_pd(a1, hi(d));
+        a2 = _mm_add_pd(a2, dlast);
+    }
+    _mm_storeu_pd(k, kv);
+    _mm_storeu_pd(g, gv);
+    _mm_storeu_pd(asc, _mm_add_pd(_mm_add_pd(a0, a1), _mm_add_pd(a2, a3)));
+}
+
+// Whole vectors of 4, then a pair of 2 (SSE2 rounding is the same), then a
+// last odd node as a pair with a copy of itself (each lane computes alone).
 int circle(const PhiConstants& k, const double* c, double* y, int n) {
-    const int i = circle_kernel(k, c, y, n);
-    return i + sse2::circle_kernel(k, c + i, y + 2 * i, n - i);
+    int i = circle_kernel(k, c, y, n);
+    i += sse2::circle_kernel(k, c + i, y + 2 * i, n - i);
+    if (i + 1 == n) {
+        const double c2[2] = {c[i], c[i]};
+        double y2[4];
+        sse2::circle_kernel(k, c2, y2, 2);
+        y[2 * i] = y2[0];
+        y[2 * i + 1] = y2[1];
+        ++i;
+    }
+    return i;
 }
 template <bool kQuarter>
 int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y, int n) {
-    const int i = arc_kernel<kQuarter>(k, a1s, kj, u, y, n);
-    return i + sse2::arc_kernel<kQuarter>(k, a1s, kj, u + i, y + 2 * i, n - i);
+    int i = arc_kernel<kQuarter>(k, a1s, kj, u, y, n);
+    i += sse2::arc_kernel<kQuarter>(k, a1s, kj, u + i, y + 2 * i, n - i);
+    if (i + 1 == n) {
+        const double u2[2] = {u[i], u[i]};
+        double y2[4];
+        sse2::arc_kernel<kQuarter>(k, a1s, kj, u2, y2, 2);
+        y[2 * i] = y2[0];
+        y[2 * i + 1] = y2[1];
+        ++i;
+    }
+    return i;
 }
 }  // namespace avx2
 #if defined(__clang__)
@@ -190,7 +314,9 @@ int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y
 
 PhiKernels pick_phi_kernels(int width) {
 #if defined(BRDFLUT_HAVE_AVX2_KERNELS)
-    if (width >= 4) return {avx2::circle, avx2::arc<false>, avx2::arc<true>};
+    if (width >= 4)
+        return {avx2::circle, avx2::arc<false>, avx2::arc<true>, avx2::panel_sums2<15>, avx2::panel_sums2<21>,
+                avx2::panel_sums2<31>};
 #endif
 #if defined(__SSE2__)
     if (width >= 2) return {sse2::circle, sse2::arc<false>, sse2::arc<true>};
@@ -365,6 +491,20 @@ struct ArcIntegrand {
     double sign;
     std::array<double, 2> operator()(double u) const { return f.at_arc<kind>(ring, sign, u); }
     void batch(const double* u, std::array<double, 2>* y, int n) const { f.at_arc_batch<kind>(ring, sign, u, y, n); }
+    // The panel sums, with AVX2 where the phi kernels use it (the same bits
+    // as detail::panel_sums and panel_sums_21).
+    template <std::size_t K>
+    void sums(const std::array<std::array<double, 2>, K>& y, std::array<double, 2>& k, std::array<double, 2>& g,
+              std::array<double, 2>& asc) const {
+        const PhiKernels& kernels = phi_kernels();
+        const PhiKernels::Sums s = K == 15 ? kernels.sums15 : K == 21 ? kernels.sums21 : kernels.sums31;
+        if (s != nullptr)
+            s(y[0].data(), k.data(), g.data(), asc.data());
+        else if constexpr (K == 21)
+            detail::panel_sums_21<2>(y, k, g, asc);
+        else
+            detail::panel_sums<static_cast<int>(K), 2>(y, k, g, asc);
+    }
 };
 
 
