@@ -20,6 +20,9 @@
 // integral of D over a polygon P is the clamped cosine's integral over
 // M^-1 P, which has a closed form (polygon_clamped_cosine).
 //
+// The fitter (src/integrate/ltc_fit.cpp) takes any lobe LtcLobe describes:
+// GGX, the Charlie sheen and the EON rough diffuse lobe.
+//
 // An isotropic BRDF lobe in this frame is symmetric in y, so M^-1 has the
 // form [[a, 0, b], [0, e, 0], [c, 0, d]] and D does not change when M^-1 is
 // scaled: engines store it divided by one of its elements (LtcInverse).
@@ -97,17 +100,59 @@ inline constexpr double kLtcMinAlpha = 1e-5;
 // this cosine instead (cos(1.57)).
 inline constexpr double kLtcMinMu = 7.963267107332633e-4;
 
+// The lobes an LTC is fitted to. Each is described by LtcLobe: f cos for a
+// direction, its exact norm n0 (the catalogue's own albedo quadrature of
+// that lobe) and where its peak is looked for (the fit's initial guess);
+// the fitter, the error figures and the light bank are the same for all.
+enum class LtcLobeKind {
+    ggx,            // GGX microfacet (F = 1), param = alpha >= kLtcMinAlpha; n0, n1 by ggx_split_sum
+    charlie_sheen,  // Charlie sheen with Neubelt's V (sheen.h), param = alpha >= kLtcSheenMinAlpha; n0 by sheen_charlie_albedo
+    eon,            // EON rough diffuse at rho = 1 (oren_nayar.h), param = sigma in [0, 1]; n0 by lobe_albedo
+};
+std::string to_string(LtcLobeKind kind);
+
+// Below this Charlie alpha the lobe is evaluated at it: the lobe at normal
+// view is then a ring within about a degree of the horizon, and its albedo
+// 2^(-1/(2 alpha)) (at alpha = 0.01, 1e-15) leaves no LTC worth fitting.
+inline constexpr double kLtcSheenMinAlpha = 0.01;
+
 // The lobe an LTC is fitted to: f(wo, wi) cos(theta_i), F = 1.
 struct LtcLobe {
-    Ggx ggx;
-    Visibility vis;
+    LtcLobeKind kind = LtcLobeKind::ggx;
+    double param = 0.0;  // the lobe's roughness as evaluated (clamped), see LtcLobeKind
+    Ggx ggx{kLtcMinAlpha};  // GGX only: Ggx{param}
+    Visibility vis = Visibility::height_correlated;  // GGX only
     Vec3 wo;
     double mu_o;
 
+    // The GGX lobe at (mu_o, alpha).
     LtcLobe(double mu_o, double alpha, Visibility vis);
+    // Any lobe at (mu_o, its parameter); vis is used by GGX only.
+    LtcLobe(LtcLobeKind kind, double mu_o, double param, Visibility vis = Visibility::height_correlated);
     // f cos(theta_i) for a unit direction wi; 0 below the horizon.
     double operator()(const Vec3& wi) const;
+    // Whether the lobe's peak lies near the mirror direction (GGX): its peak
+    // is then searched about it only; other lobes (retro-reflecting diffuse,
+    // sheen rings about the normal) are scanned over the whole plane of
+    // incidence.
+    bool peaks_near_mirror() const { return kind == LtcLobeKind::ggx; }
 };
+
+// The exact norms of a lobe: n0 = int f cos, and for GGX n1 = int f (1 -
+// v.h)^5 cos (0 for the lobes without Fresnel), by the same quadrature and
+// tolerance as the catalogue's albedo table of that lobe (ggx_albedo /
+// ggx_dfg, sheen_charlie_albedo, eon_albedo).
+struct LtcNorms {
+    double n0 = 0, n1 = 0, n0_error = 0, n1_error = 0;
+};
+LtcNorms ltc_norms(const LtcLobe& lobe);
+
+// The lobe that the catalogue's LTC table `id` (ltc_1, ltc_sheen_charlie,
+// ...) fits at the texel (roughness coordinate, cos_theta): its kind and the
+// table's mapping of the roughness coordinate to the lobe's parameter; vis
+// is the table's visibility option (GGX only). Throws Error for any other id.
+LtcLobe ltc_table_lobe(const std::string& id, double roughness, double mu,
+                       Visibility vis = Visibility::height_correlated);
 
 struct LtcFitOptions {
     int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
@@ -119,7 +164,7 @@ LtcFitOptions ltc_fit_options(int quality_level);
 
 struct LtcFit {
     LtcInverse minv;           // normalized by the middle element
-    double n0 = 0, n1 = 0;     // int f cos, int f (1 - v.h)^5 cos (ggx_split_sum)
+    double n0 = 0, n1 = 0;     // ltc_norms: int f cos, int f (1 - v.h)^5 cos (GGX; 0 otherwise)
     double n0_error = 0, n1_error = 0;
     double objective = 0;      // the fit's objective (Heitz's measure + 0.3 x triangular discrimination; ltc_fit.cpp)
     double below_horizon = 0;  // LTC mass below the horizon (of 1)
@@ -127,12 +172,15 @@ struct LtcFit {
     int evaluations = 0;
 };
 
+// Fits the LTC of a lobe. Deterministic: depends on nothing but its arguments.
+LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt = {});
 // Fits the LTC of the GGX lobe at (mu_o, alpha) (alpha below kLtcMinAlpha
-// is raised to it). Deterministic: depends on nothing but its arguments.
+// is raised to it): fit_ltc(LtcLobe(mu_o, alpha, vis)).
 LtcFit fit_ggx_ltc(double mu_o, double alpha, Visibility vis, const LtcFitOptions& opt = {});
 
 // The fit's objective at given optimizer parameters (for tests: a fitted
 // texel is a local minimum of this).
+double ltc_objective(const LtcLobe& lobe, const std::array<double, 4>& params, const LtcFitOptions& opt = {});
 double ltc_objective(double mu_o, double alpha, Visibility vis, const std::array<double, 4>& params,
                      const LtcFitOptions& opt = {});
 // M^-1 (normalized) from the optimizer's parameters.
@@ -144,6 +192,7 @@ struct LtcLobeError {
     double relative_l3 = 0;
     double below_horizon = 0;
 };
+LtcLobeError ltc_lobe_error(const LtcLobe& lobe, const Mat3& minv, double n0);
 LtcLobeError ltc_lobe_error(double mu_o, double alpha, Visibility vis, const Mat3& minv, double n0);
 
 // The fixed bank of polygon lights the integrated-light error uses: squares
@@ -178,6 +227,8 @@ struct LtcTexelReport {
     double light_max = 0;
     double light_mean = 0;
 };
+LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored,
+                                const LtcFitOptions& opt = {});
 LtcTexelReport ltc_texel_report(double mu_o, double alpha, Visibility vis, const Mat3& minv,
                                 double n0_stored, const LtcFitOptions& opt = {});
 

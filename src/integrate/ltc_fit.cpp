@@ -1,5 +1,9 @@
-// Fitting an LTC to the GGX lobe by deterministic quadrature, and the
-// error figures of any LTC against the lobe it stands for.
+// Fitting an LTC to a lobe (GGX, Charlie sheen, EON: LtcLobe) by
+// deterministic quadrature, and the error figures of any LTC against the
+// lobe it stands for. One fitter for every lobe; what differs is the
+// lobe's description: f cos, its exact norm (ltc_norms) and where its peak
+// is looked for (LtcLobe::peaks_near_mirror), which sets the initial guess
+// and the frame of the quadrature (step 2).
 //
 // Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light Shading
 //   with Linearly Transformed Cosines"
@@ -7,7 +11,8 @@
 //
 // The fit, per texel (nothing depends on other texels or on threads):
 //  1. The target p(w) = f(wo, w) cos(theta) / n0, a density on the upper
-//     hemisphere (n0 = the GGX directional albedo, by ggx_split_sum).
+//     hemisphere (n0 = the lobe's directional albedo, by the catalogue's
+//     quadrature of it: ggx_split_sum, sheen_charlie_albedo, lobe_albedo).
 //  2. A product quadrature over the whole sphere in polar coordinates
 //     (beta, phi) about the lobe's average direction: tan(beta/2) =
 //     w u / (1 - u) with Gauss-Legendre nodes in u on [0, 1] (half the
@@ -18,6 +23,11 @@
 //     a first quadrature of p about the mirror direction: w = s0 / 2 with
 //     s0 = 1 / sqrt(pi p_max), the scale of the cosine whose peak density
 //     equals the lobe's.
+//     The wide lobes (sheen, EON) take coordinates about the normal
+//     instead, w = 1, with half as many radial nodes again (lobe_shape,
+//     make_setup): about one side of a sheen ring (its lobe at normal view)
+//     the quadrature was not even in x, and the fit of a lobe symmetric
+//     about the normal came out tilted.
 //  3. The objective: Heitz's error measure, int |p - D|^3 / (p + D) dw
 //     / int p^2 dw over the sphere (p = 0 below the horizon, so LTC mass
 //     there costs), by quadrature where Heitz samples it, plus 0.3 times
@@ -32,7 +42,8 @@
 //     degrees of freedom of a y-symmetric LTC (Heitz fixes theta at the
 //     average direction), invariant to the lobe's scale.
 //  5. The initial guess, computed from the texel alone: theta at the
-//     average direction, m11 = m22 = s0, m13 = 0.
+//     lobe's peak, m11 and m22 the scales of the cosine with the lobe's
+//     half-maximum widths (initial_scale), m13 = 0.
 //  6. Nelder-Mead in double from that guess, restarted from its best
 //     vertex with smaller simplices until a restart no longer improves J.
 #include <algorithm>
@@ -40,8 +51,12 @@
 #include <numeric>
 
 #include "brdflut/ggx_integrals.h"
+#include "brdflut/lobe_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/oren_nayar.h"
 #include "brdflut/quadrature.h"
+#include "brdflut/sheen.h"
+#include "brdflut/sheen_integrals.h"
 
 namespace brdflut {
 
@@ -188,6 +203,10 @@ LobeShape lobe_shape(const LtcLobe& lobe, double n0) {
         for (double t : {theta_m - off, theta_m + off})
             if (t > lo_theta && t < hi_theta) cand.push_back(t);
     }
+    // A lobe that may peak anywhere (retro-reflection, a sheen ring about
+    // the normal): the whole plane of incidence, every degree, too.
+    if (!lobe.peaks_near_mirror())
+        for (int k = 1; k < 180; ++k) cand.push_back(lo_theta + k * kPi / 180.0);
     std::sort(cand.begin(), cand.end());
     std::size_t best = 0;
     double pbest = -1.0;
@@ -248,6 +267,15 @@ LobeShape lobe_shape(const LtcLobe& lobe, double n0) {
     };
     out.half_in = 0.5 * (half_angle(t1) + half_angle(Vec3{-t1.x, 0.0, -t1.z}));
     out.half_across = half_angle(Vec3{0.0, 1.0, 0.0});
+    if (!lobe.peaks_near_mirror()) {
+        // A wide lobe, or a ring about the normal (sheen at normal view):
+        // coordinates about the normal, the horizon at rho = 1, so that the
+        // quadrature is even in x where the lobe is (at normal view) and
+        // covers all sides of a ring alike.
+        out.frame.axis = Vec3{0.0, 0.0, 1.0};
+        out.frame.w1 = out.frame.w2 = 1.0;
+        return out;
+    }
     out.frame.axis = axis;
     // R = tan(beta/2) = beta/2 at the half-maximum angle when rho = 1.
     out.frame.w1 = std::clamp(0.5 * out.half_in, 1e-14, 1.0);
@@ -259,14 +287,35 @@ LobeShape lobe_shape(const LtcLobe& lobe, double n0) {
 // atan(s sqrt(sqrt(2) - 1)) from its axis.
 constexpr double kHalfMaxScale = 0.6435942529055827;  // sqrt(sqrt(2) - 1)
 
+// The scale s of the cosine M = diag(s, s, 1) whose density falls to half
+// its peak at the angle atan(t) from its axis: D(t) / D(0) = (1 + t^2)^(3/2)
+// / (1 + t^2 / s^2)^2 = 1/2. (For small t, s = t / kHalfMaxScale.)
+double cosine_scale_of_half_max(double t) {
+    return t / std::sqrt(std::sqrt(2.0) * std::pow(1.0 + t * t, 0.75) - 1.0);
+}
+
+// The initial scales from the lobe's half-maximum widths. GGX lobes are
+// narrow where the fit is hard, and their guess takes the narrow cosine's
+// t / kHalfMaxScale; the wide lobes (diffuse, sheen) the exact scale, so
+// that a lobe that is a cosine (EON at sigma = 0) starts at its own LTC.
+double initial_scale(const LtcLobe& lobe, double half_angle) {
+    const double t = std::tan(std::min(half_angle, 1.5));
+    return std::clamp(lobe.peaks_near_mirror() ? t / kHalfMaxScale : cosine_scale_of_half_max(t), 1e-14, 4.0);
+}
+
 Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth) {
     Setup s;
     const LobeShape shape = lobe_shape(lobe, n0);
     s.frame = shape.frame;
-    const double m11 = std::clamp(std::tan(std::min(shape.half_in, 1.5)) / kHalfMaxScale, 1e-14, 4.0);
-    const double m22 = std::clamp(std::tan(std::min(shape.half_across, 1.5)) / kHalfMaxScale, 1e-14, 4.0);
+    const double m11 = initial_scale(lobe, shape.half_in);
+    const double m22 = initial_scale(lobe, shape.half_across);
     s.x0 = {shape.theta, std::log(m11), std::log(m22), 0.0};
     s.step = {0.5 * std::min(m11, 0.5), 0.3, 0.3, 0.3};
+    // In the frame about the normal a narrow sheen lobe lies in a band at
+    // the horizon end of each ray: half as many radial nodes again resolve
+    // it (with the GGX count the fitted sheen coefficients zigzag between
+    // neighbouring texels at roughness 0.1 to 0.2 by up to 10 %).
+    if (!lobe.peaks_near_mirror()) radial += radial / 2;
     s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
     return s;
 }
@@ -338,12 +387,11 @@ double relative_l3(const SphereGrid& g, const Mat3& minv) {
     return std::cbrt(sum / g.p3);
 }
 
-// Nelder-Mead on R^4 with the standard coefficients (reflection 1,
+// Nelder-Mead on R^N with the standard coefficients (reflection 1,
 // expansion 2, contraction 1/2, shrink 1/2), from x0 with steps `step`.
-template <class F>
-std::array<double, 4> nelder_mead(F&& f, const std::array<double, 4>& x0, const std::array<double, 4>& step,
+template <int N, class F>
+std::array<double, N> nelder_mead(F&& f, const std::array<double, N>& x0, const std::array<double, N>& step,
                                   double& fbest, int max_evals, int& evals) {
-    constexpr int N = 4;
     std::array<std::array<double, N>, N + 1> x;
     std::array<double, N + 1> fx;
     x[0] = x0;
@@ -419,22 +467,107 @@ std::array<double, 4> nelder_mead(F&& f, const std::array<double, 4>& x0, const 
 
 }  // namespace
 
-LtcLobe::LtcLobe(double mu, double alpha, Visibility v)
-    : ggx{clamp_alpha(alpha)}, vis(v), wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)) {}
+std::string to_string(LtcLobeKind kind) {
+    switch (kind) {
+        case LtcLobeKind::ggx: return "ggx";
+        case LtcLobeKind::charlie_sheen: return "charlie_sheen";
+        case LtcLobeKind::eon: return "eon";
+    }
+    return "unknown";
+}
 
-// f cos(theta_i) = D(h) G2(o, i) / (4 mu_o), h = wo + wi (not normalized).
-// D = a^2 / (pi (sin^2 + a^2 cos^2)^2) of the half vector's angle, written
-// with sin^2 from h.x^2 + h.y^2 instead of 1 - cos^2: at alpha = 1e-5 the
-// peak is at sin^2 ~ 1e-10, which 1 - cos^2 resolves only to ~1e-6.
+namespace {
+double clamp_param(LtcLobeKind kind, double p) {
+    switch (kind) {
+        case LtcLobeKind::ggx: return clamp_alpha(p);
+        case LtcLobeKind::charlie_sheen: return std::clamp(p, kLtcSheenMinAlpha, 1.0);
+        case LtcLobeKind::eon: return std::clamp(p, 0.0, 1.0);
+    }
+    return p;
+}
+}  // namespace
+
+namespace {
+// Nelder-Mead from x0, restarted from its best vertex with simplices 5 times
+// smaller until a restart no longer improves f.
+template <class F>
+std::array<double, 4> descend_from(F&& f, std::array<double, 4> x, const std::array<double, 4>& step0, double& fx,
+                                   int& evals) {
+    fx = f(x);
+    ++evals;
+    double shrink = 1.0;
+    for (int restart = 0; restart < 8; ++restart) {
+        double fn = 0.0;
+        std::array<double, 4> steps = step0;
+        for (double& v : steps) v *= shrink;
+        const std::array<double, 4> xn = nelder_mead<4>(f, x, steps, fn, 800, evals);
+        const bool improved = fn < fx * (1.0 - 1e-9);
+        if (fn < fx) {
+            x = xn;
+            fx = fn;
+        }
+        if (!improved && restart > 0) break;
+        shrink *= 0.2;
+    }
+    return x;
+}
+}  // namespace
+
+LtcLobe::LtcLobe(double mu, double alpha, Visibility v) : LtcLobe(LtcLobeKind::ggx, mu, alpha, v) {}
+
+LtcLobe::LtcLobe(LtcLobeKind k, double mu, double p, Visibility v)
+    : kind(k), param(clamp_param(k, p)), ggx{k == LtcLobeKind::ggx ? clamp_param(k, p) : kLtcMinAlpha}, vis(v),
+      wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)) {}
+
+// GGX: f cos(theta_i) = D(h) G2(o, i) / (4 mu_o), h = wo + wi (not
+// normalized). D = a^2 / (pi (sin^2 + a^2 cos^2)^2) of the half vector's
+// angle, written with sin^2 from h.x^2 + h.y^2 instead of 1 - cos^2: at
+// alpha = 1e-5 the peak is at sin^2 ~ 1e-10, which 1 - cos^2 resolves only
+// to ~1e-6. The other lobes: their BRDF (sheen.h, oren_nayar.h) times
+// cos(theta_i).
 double LtcLobe::operator()(const Vec3& wi) const {
     if (wi.z <= 0.0 || wo.z <= 0.0) return 0.0;
-    const Vec3 h = add(wo, wi);
-    if (h.z <= 0.0) return 0.0;
-    const double a2 = ggx.alpha * ggx.alpha;
-    const double s2 = h.x * h.x + h.y * h.y, c2 = h.z * h.z, l2 = s2 + c2;
-    const double t = s2 + a2 * c2;
-    const double D = a2 * l2 * l2 / (kPi * t * t);
-    return D * ggx.G2(mu_o, wi.z, vis) / (4.0 * mu_o);
+    switch (kind) {
+        case LtcLobeKind::ggx: {
+            const Vec3 h = add(wo, wi);
+            if (h.z <= 0.0) return 0.0;
+            const double a2 = ggx.alpha * ggx.alpha;
+            const double s2 = h.x * h.x + h.y * h.y, c2 = h.z * h.z, l2 = s2 + c2;
+            const double t = s2 + a2 * c2;
+            const double D = a2 * l2 * l2 / (kPi * t * t);
+            return D * ggx.G2(mu_o, wi.z, vis) / (4.0 * mu_o);
+        }
+        case LtcLobeKind::charlie_sheen: return charlie_sheen_brdf(Charlie{param}, wo, wi) * wi.z;
+        case LtcLobeKind::eon: return Eon{FujiiOrenNayar{param}}.brdf(wo, wi) * wi.z;
+    }
+    return 0.0;
+}
+
+LtcNorms ltc_norms(const LtcLobe& lobe) {
+    LtcNorms n;
+    switch (lobe.kind) {
+        case LtcLobeKind::ggx: {
+            const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, lobe.vis, kGgxTableTolerance);
+            n.n0 = e.value[0] + e.value[1];
+            n.n1 = e.value[1];
+            n.n0_error = e.error[0] + e.error[1];
+            n.n1_error = e.error[1];
+            break;
+        }
+        case LtcLobeKind::charlie_sheen: {
+            const Estimate<1> e = sheen_charlie_albedo(lobe.mu_o, lobe.param, kSheenAbsTolerance);
+            n.n0 = e.value[0];
+            n.n0_error = e.error[0];
+            break;
+        }
+        case LtcLobeKind::eon: {
+            const Estimate<1> e = lobe_albedo(Lobe::eon, lobe.mu_o, lobe.param, kLobeAbsTolerance);
+            n.n0 = e.value[0];
+            n.n0_error = e.error[0];
+            break;
+        }
+    }
+    return n;
 }
 
 LtcFitOptions ltc_fit_options(int quality_level) {
@@ -471,47 +604,33 @@ LtcInverse ltc_inverse_from_params(const std::array<double, 4>& p) {
     return LtcInverse::from_matrix((r * s).inverse());
 }
 
-double ltc_objective(double mu, double alpha, Visibility vis, const std::array<double, 4>& params,
-                     const LtcFitOptions& opt) {
-    const LtcLobe lobe(mu, alpha, vis);
-    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
-    const double n0 = e.value[0] + e.value[1];
-    const Setup s = make_setup(lobe, n0, opt.radial_nodes, opt.azimuth_nodes);
+double ltc_objective(const LtcLobe& lobe, const std::array<double, 4>& params, const LtcFitOptions& opt) {
+    const Setup s = make_setup(lobe, ltc_norms(lobe).n0, opt.radial_nodes, opt.azimuth_nodes);
     return objective(s.grid, ltc_inverse_from_params(params).matrix());
 }
 
+double ltc_objective(double mu, double alpha, Visibility vis, const std::array<double, 4>& params,
+                     const LtcFitOptions& opt) {
+    return ltc_objective(LtcLobe(mu, alpha, vis), params, opt);
+}
+
 LtcFit fit_ggx_ltc(double mu, double alpha, Visibility vis, const LtcFitOptions& opt) {
-    const LtcLobe lobe(mu, alpha, vis);
+    return fit_ltc(LtcLobe(mu, alpha, vis), opt);
+}
+
+LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
     LtcFit out;
-    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
-    out.n0 = e.value[0] + e.value[1];
-    out.n1 = e.value[1];
-    out.n0_error = e.error[0] + e.error[1];
-    out.n1_error = e.error[1];
+    const LtcNorms norms = ltc_norms(lobe);
+    out.n0 = norms.n0;
+    out.n1 = norms.n1;
+    out.n0_error = norms.n0_error;
+    out.n1_error = norms.n1_error;
     const Setup s = make_setup(lobe, out.n0, opt.radial_nodes, opt.azimuth_nodes);
     auto f = [&](const std::array<double, 4>& p) { return objective(s.grid, ltc_inverse_from_params(p).matrix()); };
 
     int evals = 0;
-    // Nelder-Mead from x0, restarted from its best vertex with smaller
-    // simplices until a restart no longer improves J.
-    auto descend = [&](std::array<double, 4> x, const std::array<double, 4>& step0, double& fx) {
-        fx = f(x);
-        ++evals;
-        double shrink = 1.0;
-        for (int restart = 0; restart < 8; ++restart) {
-            double fn = 0.0;
-            std::array<double, 4> steps = step0;
-            for (double& v : steps) v *= shrink;
-            const std::array<double, 4> xn = nelder_mead(f, x, steps, fn, 800, evals);
-            const bool improved = fn < fx * (1.0 - 1e-9);
-            if (fn < fx) {
-                x = xn;
-                fx = fn;
-            }
-            if (!improved && restart > 0) break;
-            shrink *= 0.2;
-        }
-        return x;
+    auto descend = [&](const std::array<double, 4>& x0, const std::array<double, 4>& step0, double& fx) {
+        return descend_from(f, x0, step0, fx, evals);
     };
     double fx = 0.0;
     std::array<double, 4> x = descend(s.x0, s.step, fx);
@@ -535,8 +654,7 @@ LtcFit fit_ggx_ltc(double mu, double alpha, Visibility vis, const LtcFitOptions&
     return out;
 }
 
-LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3& minv, double n0) {
-    const LtcLobe lobe(mu, alpha, vis);
+LtcLobeError ltc_lobe_error(const LtcLobe& lobe, const Mat3& minv, double n0) {
     const LtcFitOptions fine = ltc_fit_options(2);
     const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
     LtcLobeError e;
@@ -544,6 +662,10 @@ LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3&
     e.relative_l3 = relative_l3(s.grid, scaled);
     e.below_horizon = below_horizon_of(LtcInverse::from_matrix(minv));
     return e;
+}
+
+LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3& minv, double n0) {
+    return ltc_lobe_error(LtcLobe(mu, alpha, vis), minv, n0);
 }
 
 // ---- The light bank ----
@@ -679,9 +801,7 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
 }  // namespace
 
 std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol) {
-    const double n0 = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, lobe.vis, kGgxTableTolerance).value[0] +
-                      ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, lobe.vis, kGgxTableTolerance).value[1];
-    const LobeFrame f = lobe_shape(lobe, n0).frame;
+    const LobeFrame f = lobe_shape(lobe, ltc_norms(lobe).n0).frame;
     std::vector<double> out;
     for (const LtcLight& l : lights) out.push_back(polygon_light(lobe, f, l, abs_tol));
     return out;
@@ -700,13 +820,10 @@ LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vec
     return e;
 }
 
-LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const Mat3& minv, double n0_stored,
-                                const LtcFitOptions& opt) {
-    const LtcLobe lobe(mu, alpha, vis);
-    const Estimate<2> e = ggx_split_sum(lobe.mu_o, lobe.ggx.alpha, vis, kGgxTableTolerance);
-    const double n0 = e.value[0] + e.value[1];
+LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored, const LtcFitOptions& opt) {
+    const double n0 = ltc_norms(lobe).n0;
     LtcTexelReport r;
-    const LtcLobeError le = ltc_lobe_error(mu, alpha, vis, minv, n0);
+    const LtcLobeError le = ltc_lobe_error(lobe, minv, n0);
     r.relative_l3 = le.relative_l3;
     r.below_horizon = le.below_horizon;
     const std::vector<LtcLight> bank = ltc_light_bank(lobe.mu_o);
@@ -715,6 +832,11 @@ LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const M
     r.light_max = l.max;
     r.light_mean = l.mean;
     return r;
+}
+
+LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const Mat3& minv, double n0_stored,
+                                const LtcFitOptions& opt) {
+    return ltc_texel_report(LtcLobe(mu, alpha, vis), minv, n0_stored, opt);
 }
 
 }  // namespace brdflut
