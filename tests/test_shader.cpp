@@ -155,8 +155,7 @@ TEST(ShaderWriter, LtcShaderMatrixUnpacksTheFittedInverseTheEvaluatorStores) {
                 const double coords[2] = {r, mu};  // (roughness, cos_theta), the definition's order
                 const TexelValue v = p.evaluator->evaluate(coords, 0);
                 const Mat3 m = stored_ltc_inverse(def, v.value.data());
-                const Mat3 fit = fit_ggx_ltc(mu, alpha_from_perceptual(r), Visibility::height_correlated,
-                                             ltc_fit_options(0)).minv.matrix();
+                const Mat3 fit = fit_ltc(ltc_table_lobe(def.id, r, mu), ltc_fit_options(0)).minv.matrix();
                 ASSERT_GT(std::abs(m.m[1][1]), 0.0);
                 for (int i = 0; i < 3; ++i)
                     for (int j = 0; j < 3; ++j)
@@ -165,7 +164,7 @@ TEST(ShaderWriter, LtcShaderMatrixUnpacksTheFittedInverseTheEvaluatorStores) {
                             << "M^-1[" << i << "][" << j << "] at roughness " << r << ", cos_theta " << mu;
             }
     }
-    EXPECT_EQ(tables, 2) << "ltc_1 and hdrp_ltc_ggx";
+    EXPECT_EQ(tables, 4) << "ltc_1, hdrp_ltc_ggx, ltc_sheen_charlie and ltc_eon";
 }
 
 }  // namespace

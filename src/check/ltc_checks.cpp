@@ -26,23 +26,17 @@ std::pair<double, std::string> metadata_maxima_error(const std::string& id) {
     s.axes[0].count = 5;
     s.axes[1].count = 4;
     const Table t = generate(def, s);
-    const bool hdrp = id == "hdrp_ltc_ggx";
     const nlohmann::json& fe = t.method.at("fit_error");
     LtcFitOptions fine;
     fine.light_tolerance = 1e-3 * fe.at("light_tolerance").get<double>();
     double light = 0.0, l3 = 0.0, below = 0.0;
     for (std::size_t k = 0; k < t.texel_count(); ++k) {
         const int ix = static_cast<int>(k % 5), iy = static_cast<int>(k / 5);
-        const double r = s.axes[0].value(ix), mu = s.axes[1].value(iy);
-        const double alpha = std::max(alpha_from_perceptual(r), hdrp ? 1e-3 : 0.0);
+        const LtcLobe lobe = ltc_table_lobe(id, s.axes[0].value(ix), s.axes[1].value(iy));
         const double v[4] = {t.at(k, 0), t.at(k, 1), t.at(k, 2), t.at(k, 3)};
-        // ltc_1: (a, c, b, d) of M^-1 / m11; hdrp: (m00, m20, m11, m02) of M^-1 / m22.
-        const Mat3 minv = hdrp ? Mat3{{{{v[0], 0, v[3]}, {0, v[2], 0}, {v[1], 0, 1}}}}
-                               : LtcInverse{v[0], v[2], v[1], v[3]}.matrix();
-        const Estimate<2> n = ggx_split_sum(std::max(mu, kLtcMinMu), std::max(alpha, kLtcMinAlpha),
-                                            Visibility::height_correlated, kGgxTableTolerance);
-        const LtcTexelReport rep = ltc_texel_report(mu, alpha, Visibility::height_correlated, minv,
-                                                    n.value[0] + n.value[1], fine);
+        // The matrix by the table's packing, as a shader unpacks it.
+        const Mat3 minv = stored_ltc_inverse(def, v);
+        const LtcTexelReport rep = ltc_texel_report(lobe, minv, ltc_norms(lobe).n0, fine);
         light = std::max(light, rep.light_max);
         l3 = std::max(l3, rep.relative_l3);
         below = std::max(below, rep.below_horizon);
@@ -83,47 +77,75 @@ void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
              return r;
          }},
     };
-    // The fit at a spread of texels is a local minimum: no parameter moved
-    // by 1e-3 (theta by 1e-3 of the lobe's width) lowers the objective. The
-    // row is the relative drop (0 when none).
-    m["ltc_1"] = {
-        {"fit is a local minimum of its objective (relative drop under perturbation)", 1e-9,
+    m["ltc_eon_norm"] = {
+        {"n0 vs 1 (EON conserves energy at rho = 1)", 1e-8,
          [](const TexelEvaluator& e) {
              Result r{0.0, ""};
-             for (double rough : {0.1, 0.5, 0.9})
-                 for (double mu : {1.0, 0.5, 0.05}) {
-                     const double c[2] = {rough, mu};
-                     const TexelValue v = e.evaluate(c, 0);
-                     const double alpha = alpha_from_perceptual(rough);
-                     const LtcFit fit = fit_ggx_ltc(mu, alpha, Visibility::height_correlated);
-                     // The table holds this fit.
-                     double drop = std::abs(v.value[0] - fit.minv.a) + std::abs(v.value[3] - fit.minv.d);
-                     const double width = std::min(std::exp(fit.params[1]), 1.0);
-                     const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
-                     for (int k = 0; k < 4; ++k)
-                         for (double sgn : {-1.0, 1.0}) {
-                             std::array<double, 4> p = fit.params;
-                             p[static_cast<std::size_t>(k)] += sgn * steps[k];
-                             const double j = ltc_objective(mu, alpha, Visibility::height_correlated, p);
-                             drop = std::max(drop, (fit.objective - j) / fit.objective);
-                         }
-                     if (drop > r.first || r.second.empty()) {
-                         std::ostringstream s;
-                         s << "at roughness " << rough << ", mu " << mu;
-                         r = {std::max(drop, 0.0), s.str()};
-                     }
+             for (double sigma : {0.0, 0.3, 0.7, 1.0})
+                 for (double mu : {1.0, 0.5, 0.05, 0.0}) {
+                     const double c[2] = {sigma, mu};
+                     const double err = std::abs(e.evaluate(c, 0).value[0] - 1.0);
+                     if (err > r.first || r.second.empty())
+                         r = {err, "at sigma = " + std::to_string(sigma) + ", mu = " + std::to_string(mu)};
                  }
              return r;
          }},
-        // The light errors differ by the exact light's own error, at most the
-        // metadata's tolerance (1e-4 of n0) per light.
-        {"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
-         [](const TexelEvaluator&) { return metadata_maxima_error("ltc_1"); }},
     };
-    m["hdrp_ltc_ggx"] = {
-        {"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
-         [](const TexelEvaluator&) { return metadata_maxima_error("hdrp_ltc_ggx"); }},
+    m["ltc_sheen_charlie_norm"] = {
+        {"n0 at cos_theta = 1 vs 2^(1 - n/2) / (n + 2), n = 2 + 1/alpha", 1e-9,
+         [](const TexelEvaluator& e) {
+             Result r{0.0, ""};
+             for (double rough : {0.2, 0.5, 0.8, 1.0}) {
+                 const double c[2] = {rough, 1.0};
+                 const double n = 2.0 + 1.0 / (rough * rough);
+                 const double err = std::abs(e.evaluate(c, 0).value[0] - std::pow(2.0, 1.0 - 0.5 * n) / (n + 2.0));
+                 if (err > r.first || r.second.empty()) r = {err, "at roughness = " + std::to_string(rough)};
+             }
+             return r;
+         }},
     };
+    // The fit at a spread of texels is a local minimum: no parameter moved
+    // by 1e-3 (theta by 1e-3 of the lobe's width) lowers the objective. The
+    // row is the relative drop (0 when none).
+    auto local_minimum = [](const std::string& id) {
+        return ClosedFormCheck{
+            "fit is a local minimum of its objective (relative drop under perturbation)", 1e-9,
+            [id](const TexelEvaluator& e) {
+                Result r{0.0, ""};
+                for (double rough : {0.1, 0.5, 0.9})
+                    for (double mu : {1.0, 0.5, 0.05}) {
+                        const double c[2] = {rough, mu};
+                        const TexelValue v = e.evaluate(c, 0);
+                        const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
+                        const LtcFit fit = fit_ltc(lobe);
+                        // The table holds this fit.
+                        double drop = std::abs(v.value[0] - fit.minv.a) + std::abs(v.value[3] - fit.minv.d);
+                        const double width = std::min(std::exp(fit.params[1]), 1.0);
+                        const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
+                        for (int k = 0; k < 4; ++k)
+                            for (double sgn : {-1.0, 1.0}) {
+                                std::array<double, 4> p = fit.params;
+                                p[static_cast<std::size_t>(k)] += sgn * steps[k];
+                                const double j = ltc_objective(lobe, p);
+                                drop = std::max(drop, (fit.objective - j) / fit.objective);
+                            }
+                        if (drop > r.first || r.second.empty()) {
+                            std::ostringstream s;
+                            s << "at " << (id == "ltc_eon" ? "sigma " : "roughness ") << rough << ", mu " << mu;
+                            r = {std::max(drop, 0.0), s.str()};
+                        }
+                    }
+                return r;
+            }};
+    };
+    // The light errors differ by the exact light's own error, at most the
+    // metadata's tolerance (1e-4 of n0) per light.
+    auto maxima = [](const std::string& id) {
+        return ClosedFormCheck{"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
+                               [id](const TexelEvaluator&) { return metadata_maxima_error(id); }};
+    };
+    for (const char* id : {"ltc_1", "ltc_sheen_charlie", "ltc_eon"}) m[id] = {local_minimum(id), maxima(id)};
+    m["hdrp_ltc_ggx"] = {maxima("hdrp_ltc_ggx")};
 }
 
 }  // namespace brdflut

@@ -44,10 +44,11 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
     const auto& axes = d.settings.axes;
     int ir = -1, imu = -1;
     for (std::size_t i = 0; i < axes.size(); ++i) {
-        if (axes[i].name == "roughness") ir = static_cast<int>(i);
+        if (axes[i].name == d.def->axes[0].axis.name) ir = static_cast<int>(i);  // roughness (EON: sigma)
         if (axes[i].name == "cos_theta") imu = static_cast<int>(i);
     }
-    if (ir < 0 || imu < 0 || axes.size() != 2) throw Error("an LTC table has the axes roughness and cos_theta");
+    if (ir < 0 || imu < 0 || axes.size() != 2)
+        throw Error("an LTC table has the axes " + d.def->axes[0].axis.name + " and cos_theta");
     const auto vis_it = d.settings.params.find("visibility");
     const Visibility vis =
         visibility_from_string(vis_it == d.settings.params.end() ? "height_correlated" : vis_it->second);
@@ -60,17 +61,16 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
     out.stored_light.assign(n, 0.0);
     out.refit_light.assign(n, 0.0);
     std::vector<double> below(n, 0.0);
-    const bool hdrp = id == "hdrp_ltc_ggx";
     parallel_for_index(n, threads, [&](std::size_t k) {
         const int pos[2] = {static_cast<int>(k % w), static_cast<int>(k / w)};
         const double r = axes[static_cast<std::size_t>(ir)].value(pos[ir]);
         const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
         const double* p = &img.pixels[k * nc];
         const Mat3 minv = stored_ltc_inverse(*d.def, p);
-        const double alpha = std::max(alpha_from_perceptual(r), hdrp ? 1e-3 : 0.0);  // as the table
-        const LtcFit fit = fit_ggx_ltc(mu, alpha, vis);
-        const LtcTexelReport stored = ltc_texel_report(mu, alpha, vis, minv, fit.n0);
-        const LtcTexelReport refit = ltc_texel_report(mu, alpha, vis, fit.minv.matrix(), fit.n0);
+        const LtcLobe lobe = ltc_table_lobe(id, r, mu, vis);  // as the table fits it
+        const LtcFit fit = fit_ltc(lobe);
+        const LtcTexelReport stored = ltc_texel_report(lobe, minv, fit.n0);
+        const LtcTexelReport refit = ltc_texel_report(lobe, fit.minv.matrix(), fit.n0);
         out.stored_light[k] = stored.light_max;
         out.refit_light[k] = refit.light_max;
         below[k] = stored.below_horizon;

@@ -269,7 +269,8 @@ const std::vector<Preset>& presets() {
          PixelType::half},
         {"ltc", "Heitz 2016 LTC area-light tables ltc_1, ltc_2 as three.js, EEVEE and Godot load them "
                 "(64x64, rows sqrt(1 - cos theta), columns roughness, end points), refitted, with the "
-                "per-texel error table ltc_ggx_error",
+                "per-texel error table ltc_ggx_error; the same layout fitted to the Charlie sheen "
+                "(ltc_sheen_charlie, _norm, _error) and EON diffuse (ltc_eon, _norm, _error) lobes",
          PixelType::float32},
         {"hdrp_ltc", "Unity HDRP's LTC GGX matrix (64x64, columns roughness, rows sqrt(1 - cos theta), end "
                      "points, alpha >= 1e-3), refitted; float, as its entries reach past the half range",

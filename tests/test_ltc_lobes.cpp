@@ -1,0 +1,199 @@
+// LTC fits of the Charlie sheen and EON rough diffuse lobes: the norm
+// against the catalogue's albedo tables, local optimality, smoothness, the
+// symmetric fit at normal view, the identity for a Lambertian lobe, thread
+// independence, and verify's checks of their tables.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/generate.h"
+#include "brdflut/ltc.h"
+#include "brdflut/verify.h"
+
+namespace brdflut {
+namespace {
+
+const char* const kMatrixTables[] = {"ltc_sheen_charlie", "ltc_eon"};
+
+// Texels of the 64x64 grid spread over it (normal view, grazing rows, the
+// smallest and largest roughness included).
+struct Texel { int t, a; };
+std::vector<Texel> subset() {
+    return {{0, 10}, {0, 63}, {12, 3}, {20, 20}, {30, 50}, {45, 30}, {58, 15}, {63, 2}, {63, 40}};
+}
+double mu_of(int t) { const double u = t / 63.0; return 1.0 - u * u; }
+double r_of(int a) { return a / 63.0; }
+
+TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
+    // The fit's n0 and the norm tables against sheen_charlie_albedo and
+    // eon_albedo, evaluated at the lobe's (clamped) parameters.
+    struct Case { const char* matrix; const char* norm; const char* albedo; };
+    for (const Case& c : {Case{"ltc_sheen_charlie", "ltc_sheen_charlie_norm", "sheen_charlie_albedo"},
+                          Case{"ltc_eon", "ltc_eon_norm", "eon_albedo"}}) {
+        SCOPED_TRACE(c.matrix);
+        const TableDefinition& albedo = find_table(c.albedo);
+        const TableDefinition& norm = find_table(c.norm);
+        const PreparedTable pa = albedo.prepare(default_settings(albedo));
+        const PreparedTable pn = norm.prepare(default_settings(norm));
+        for (const Texel& x : subset()) {
+            const LtcLobe lobe = ltc_table_lobe(c.matrix, r_of(x.a), mu_of(x.t));
+            // The tables' roughness coordinate: Charlie alpha = max(r^2, 0.01), EON sigma = r.
+            const double r = r_of(x.a);
+            EXPECT_EQ(lobe.param, std::string(c.matrix) == "ltc_eon" ? r : std::max(r * r, kLtcSheenMinAlpha));
+            const LtcFit fit = fit_ltc(lobe, ltc_fit_options(0));
+            const double ca[2] = {lobe.mu_o, lobe.param};  // (cos_theta, alpha or sigma)
+            const double exact = pa.evaluator->evaluate(ca, 0).value[0];
+            EXPECT_NEAR(fit.n0, exact, 1e-7 * std::max(1.0, exact)) << "t=" << x.t << " a=" << x.a;
+            const double cn[2] = {r_of(x.a), mu_of(x.t)};  // (roughness, cos_theta)
+            EXPECT_EQ(pn.evaluator->evaluate(cn, 0).value[0], fit.n0);
+            EXPECT_GT(fit.n0, 0.0);
+        }
+    }
+}
+
+TEST(LtcLobes, EveryFittedTexelIsALocalMinimumOfTheObjective) {
+    for (const char* id : kMatrixTables) {
+        for (const Texel& x : subset()) {
+            const LtcLobe lobe = ltc_table_lobe(id, r_of(x.a), mu_of(x.t));
+            const LtcFit fit = fit_ltc(lobe);
+            const double j0 = ltc_objective(lobe, fit.params);
+            EXPECT_DOUBLE_EQ(j0, fit.objective) << id;
+            if (fit.objective < 1e-12) continue;  // the exact LTC (EON at sigma = 0): tested below
+            const double width = std::min(std::exp(fit.params[1]), 1.0);
+            const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
+            for (int k = 0; k < 4; ++k)
+                for (double sgn : {-1.0, 1.0}) {
+                    std::array<double, 4> p = fit.params;
+                    p[static_cast<std::size_t>(k)] += sgn * steps[k];
+                    EXPECT_GE(ltc_objective(lobe, p), j0 * (1.0 - 1e-9))
+                        << id << " t=" << x.t << " a=" << x.a << " parameter " << k;
+                }
+        }
+    }
+}
+
+TEST(LtcLobes, EonAtSigmaZeroIsLambertAndItsFitIsTheIdentity) {
+    for (const double mu : {1.0, 0.7, 0.3, 0.05, 0.0}) {
+        const LtcLobe lobe = ltc_table_lobe("ltc_eon", 0.0, mu);
+        EXPECT_NEAR(lobe(Vec3{0.6, 0.0, 0.8}), 0.8 / kPi, 1e-15);
+        const LtcFit fit = fit_ltc(lobe);
+        EXPECT_NEAR(fit.minv.a, 1.0, 1e-9) << mu;
+        EXPECT_NEAR(fit.minv.b, 0.0, 1e-9) << mu;
+        EXPECT_NEAR(fit.minv.c, 0.0, 1e-9) << mu;
+        EXPECT_NEAR(fit.minv.d, 1.0, 1e-9) << mu;
+        EXPECT_NEAR(fit.n0, 1.0, 1e-9);
+        EXPECT_EQ(fit.below_horizon, 0.0);
+        // ... and a texel of small sigma is close to it, but not equal.
+        const LtcFit near = fit_ltc(ltc_table_lobe("ltc_eon", 0.05, mu));
+        EXPECT_GT(std::abs(near.minv.d - 1.0) + std::abs(near.minv.b), 1e-4) << mu;
+        EXPECT_LT(std::abs(near.minv.d - 1.0) + std::abs(near.minv.b), 0.05) << mu;
+    }
+}
+
+TEST(LtcLobes, FitAtNormalViewIsRotationallySymmetric) {
+    // At normal view the lobe is symmetric about the normal, and the shading
+    // frame's azimuth is arbitrary: the LTC must be, too (M^-1 diagonal with
+    // equal tangent scales). The sheen's lobe there is a ring about the
+    // normal; fitted in coordinates about one side of the ring its LTC came
+    // out tilted (M^-1[0][2] = 0.09 at r = 0.1).
+    for (const char* id : kMatrixTables)
+        for (const double r : {0.1, 0.4, 0.7, 1.0}) {
+            const LtcFit fit = fit_ltc(ltc_table_lobe(id, r, 1.0));
+            EXPECT_NEAR(fit.minv.a, 1.0, 1e-6) << id << " r=" << r;
+            EXPECT_NEAR(fit.minv.b, 0.0, 1e-6 * fit.minv.d) << id << " r=" << r;
+            EXPECT_NEAR(fit.minv.c, 0.0, 1e-6) << id << " r=" << r;
+        }
+}
+
+TEST(LtcLobes, CoefficientsAreSmoothAlongARowAndAColumn) {
+    // Second differences of the stored coefficients relative to max(1,
+    // |coefficient|): along a grazing row and a middle column, at every
+    // other texel, except the sheen's rows: every texel from r = 8/63 (its
+    // coefficients curve fast at small roughness), where a coarser quadrature
+    // made its fits zigzag (0.15 in the middle row). Below r = 0.1 the
+    // sheen's alpha is held at 0.01, a kink of the table.
+    auto worst = [](const std::vector<LtcInverse>& v) {
+        double w = 0.0;
+        for (std::size_t i = 1; i + 1 < v.size(); ++i) {
+            const double x[4] = {v[i].a, v[i].b, v[i].c, v[i].d};
+            const double d[4] = {v[i - 1].a - 2 * v[i].a + v[i + 1].a, v[i - 1].b - 2 * v[i].b + v[i + 1].b,
+                                 v[i - 1].c - 2 * v[i].c + v[i + 1].c, v[i - 1].d - 2 * v[i].d + v[i + 1].d};
+            for (int k = 0; k < 4; ++k) w = std::max(w, std::abs(d[k]) / std::max(1.0, std::abs(x[k])));
+        }
+        return w;
+    };
+    auto row = [](const char* id, int t, int a0, int step) {
+        std::vector<LtcInverse> v;
+        for (int a = a0; a < 64; a += step) v.push_back(fit_ltc(ltc_table_lobe(id, r_of(a), mu_of(t))).minv);
+        return v;
+    };
+    auto col = [](const char* id, int a) {
+        std::vector<LtcInverse> v;
+        for (int t = 0; t < 64; t += 2) v.push_back(fit_ltc(ltc_table_lobe(id, r_of(a), mu_of(t))).minv);
+        return v;
+    };
+    EXPECT_LT(worst(row("ltc_eon", 56, 0, 2)), 0.03);
+    EXPECT_LT(worst(col("ltc_eon", 32)), 0.03);
+    EXPECT_LT(worst(row("ltc_sheen_charlie", 56, 8, 1)), 0.06);
+    EXPECT_LT(worst(col("ltc_sheen_charlie", 32)), 0.1);
+    EXPECT_LT(worst(row("ltc_sheen_charlie", 32, 8, 1)), 0.06);
+}
+
+TEST(LtcLobes, TablesAreByteIdenticalForOneTwoAndAllThreads) {
+    for (const char* id : {"ltc_sheen_charlie", "ltc_sheen_charlie_norm", "ltc_sheen_charlie_error", "ltc_eon",
+                           "ltc_eon_norm", "ltc_eon_error"}) {
+        const TableDefinition& def = find_table(id);
+        TableSettings s = default_settings(def);
+        s.axes[0].count = 5;
+        s.axes[1].count = 4;
+        GenerateOptions o1, o2, oall;
+        o1.threads = 1;
+        o2.threads = 2;
+        oall.threads = 0;
+        const Table a = generate(def, s, o1), b = generate(def, s, o2), c = generate(def, s, oall);
+        EXPECT_EQ(a.values, b.values) << id;
+        EXPECT_EQ(a.values, c.values) << id;
+        EXPECT_EQ(a.method.dump(), b.method.dump()) << id;
+        EXPECT_EQ(a.method.dump(), c.method.dump()) << id;
+    }
+}
+
+TEST(LtcLobes, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
+    // The matrix tables' metadata maxima (exact light to 1e-4 of n0) against
+    // the per-texel channels of their error tables on the same grid (1e-7).
+    for (const char* id : kMatrixTables) {
+        SCOPED_TRACE(id);
+        const TableDefinition& m = find_table(id);
+        const TableDefinition& r = find_table(std::string(id) + "_error");
+        TableSettings s = default_settings(m);
+        s.axes[0].count = 4;
+        s.axes[1].count = 4;
+        const Table tm = generate(m, s), tr = generate(r, s);
+        const nlohmann::json& fe = tm.method.at("fit_error");
+        double l3 = 0.0, below = 0.0, light = 0.0;
+        for (std::size_t k = 0; k < tr.texel_count(); ++k) {
+            l3 = std::max(l3, tr.at(k, 0));
+            below = std::max(below, tr.at(k, 1));
+            light = std::max(light, tr.at(k, 2));
+        }
+        EXPECT_GT(light, 1e-3);  // not a trivial maximum
+        EXPECT_NEAR(fe.at("light_error_max").get<double>(), light, 1e-4);
+        EXPECT_NEAR(fe.at("relative_l3_max").get<double>(), l3, 1e-12);
+        EXPECT_NEAR(fe.at("below_horizon_max").get<double>(), below, 1e-12);
+    }
+}
+
+TEST(LtcLobes, VerifyChecksOfTheNewTablesPass) {
+    for (const char* id : {"ltc_sheen_charlie", "ltc_eon", "ltc_sheen_charlie_norm", "ltc_eon_norm"}) {
+        const std::vector<CheckRow> rows = verify_table(find_table(id));
+        ASSERT_FALSE(rows.empty()) << id;
+        for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
+    }
+}
+
+}  // namespace
+}  // namespace brdflut
