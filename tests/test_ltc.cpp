@@ -189,6 +189,28 @@ TEST(LtcFit, NormAndFresnelMomentMatchGgxAlbedoAndDfg) {
     }
 }
 
+TEST(LtcTables, Ltc2HoldsTheFitsNormsWithoutFitting) {
+    // ltc_2 computes n0 and n1 by the exact integrals alone: the same values
+    // as the fit that ltc_1 stores carries.
+    const TableDefinition& def = find_table("ltc_2");
+    const PreparedTable p = def.prepare(default_settings(def));
+    for (const Texel& x : subset()) {
+        const double r = std::sqrt(alpha_of(x.a));
+        const double c[2] = {r, mu_of(x.t)};
+        const TexelValue v = p.evaluator->evaluate(c, 0);
+        const LtcFit fit = fit_ggx_ltc(mu_of(x.t), alpha_from_perceptual(r), Visibility::height_correlated);
+        EXPECT_EQ(v.value[0], fit.n0) << x.t << " " << x.a;
+        EXPECT_EQ(v.value[1], fit.n1) << x.t << " " << x.a;
+        EXPECT_EQ(v.error[0], fit.n0_error);
+    }
+    EXPECT_FALSE(generate(def, [&] {
+                     TableSettings s = default_settings(def);
+                     s.axes[0].count = 2;
+                     s.axes[1].count = 2;
+                     return s;
+                 }()).method.contains("fit_error"));
+}
+
 TEST(LtcFit, CoefficientsAreSmoothAlongARowAndAColumn) {
     // Second differences of the stored coefficients along roughness (at a
     // grazing row) and along the view angle (at a middle column): a texel
