@@ -14,7 +14,6 @@
 #include "brdflut/error.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
-#include "brdflut/sheen_integrals.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -25,7 +24,7 @@ enum class Layout {
     heitz_norms,   // ltc_2: (n0, n1, 0, sphere form factor)
     norm,          // n0 alone (the lobes without a Fresnel moment)
     hdrp_matrix,   // (m00, m20, m11, m02) of M^-1 / M^-1[2][2], HLSL _mRC
-    report,        // ltc_ggx_error: the per-texel error figures
+    report,        // ltc_ggx_error and the other lobes' _error: the per-texel error figures
 };
 
 // The figures each texel's fit leaves for the table-wide summary, one slot
@@ -191,6 +190,11 @@ nlohmann::json ltc_model(LtcLobeKind kind, Visibility vis, const std::string& la
             {"frame", kFrame}};
 }
 
+// The error report of the lobe's tables.
+std::string report_table(LtcLobeKind kind) {
+    return kind == LtcLobeKind::ggx ? "ltc_ggx_error" : kind == LtcLobeKind::eon ? "ltc_eon_error" : "ltc_sheen_charlie_error";
+}
+
 int quality_level(Quality q) { return q == Quality::draft ? 0 : q == Quality::reference ? 2 : 1; }
 
 struct Entry {
@@ -260,8 +264,7 @@ TableDefinition make(const Entry& e) {
                                  "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
                                  "the polygon, relative tolerance " +
                                  std::to_string(opt.light_tolerance);
-        const std::string report_id =
-            kind == LtcLobeKind::ggx ? "ltc_ggx_error" : "ltc_" + std::string(kind == LtcLobeKind::eon ? "eon" : "sheen_charlie") + "_error";
+        const std::string report_id = report_table(kind);
         p.finish = [figures, layout, opt, report_id](Table& t) {
             nlohmann::json fe;
             fe["objective_max"] = *std::max_element(figures->objective.begin(), figures->objective.end());
