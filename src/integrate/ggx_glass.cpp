@@ -138,7 +138,7 @@ struct GlassIntegrand {
 };
 
 // Integral over phi in [0, pi] at fixed t: {E_R, E_T, error estimate}.
-std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double tol, int* evals) {
+std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double tol, long long* evals) {
     const Ring q = f.ring(t);
     std::array<double, 3> out{};
     const double c_max = q.a0 + q.a1, c_min = q.a0 - q.a1;
@@ -244,16 +244,17 @@ Estimate<2> smooth_limit(double mu_o, double eta) {
     return out;
 }
 
-}  // namespace
-
-Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, double abs_tol) {
+// The outer integral over x = ln(t / alpha), t = tan(theta_h), of ggx_glass
+// and ggx_glass_average. breaks: break points in x, beside x = +-kTailX.
+// sech2_scale sech^2(x) dx / pi is the outer weight w (1/2 for ggx_glass,
+// whose rings are integrated over phi in [0, pi] only; 1 for the average).
+// inner(t, w, inner_budget, &evals) returns w times the inner integral at t,
+// {E_R, E_T, error estimate}, to an absolute error of about inner_budget,
+// and adds its evaluations to evals.
+template <class Inner>
+Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, double sech2_scale, double abs_tol,
+                             const Inner& inner) {
     Estimate<2> out;
-    if (!(mu_o >= 0.0) || !(eta > 0.0)) return out;
-    mu_o = std::clamp(mu_o, kGrazingMu, 1.0);
-    if (!(alpha > 0.0)) return smooth_limit(mu_o, eta);
-    const GlassIntegrand f(alpha, vis, mu_o, eta);
-    const double ln_alpha = std::log(alpha);
-
     // Segments in x, split at the break points and at x = +-kTailX. On the
     // first and the last segment, beyond every break point, the integral is
     // taken over v = e^(-|x|) instead, in which both tails are analytic up to
@@ -261,10 +262,7 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
     // no cut and no tail bound. Between them x itself keeps the scales of
     // the half-vector distribution apart.
     std::vector<double> xs{-HUGE_VAL, -kTailX, kTailX, HUGE_VAL};
-    for (double t : outer_breaks(f)) {
-        const double x = std::log(t) - ln_alpha;
-        if (std::isfinite(x)) xs.push_back(x);
-    }
+    xs.insert(xs.end(), breaks.begin(), breaks.end());
     std::sort(xs.begin(), xs.end());
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
     const int segments = static_cast<int>(xs.size()) - 1;
@@ -288,28 +286,23 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
         const double y0 = side == 0 ? xa : side < 0 ? std::exp(xa) : std::exp(-xb);
         const double len = (side == 0 ? xb : side < 0 ? std::exp(xb) : std::exp(-xa)) - y0;
         const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
-        int inner_evals = 0;
+        long long inner_evals = 0;
         const Estimate<3> e = integrate_adaptive_panels<3>(
             [&](double u) -> std::array<double, 3> {
                 const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
                 double w, t;
                 if (side == 0) {
                     const double ch = std::cosh(y);
-                    // (1/2) sech^2(x) / pi: phi is integrated over [0, pi] only.
-                    w = 0.5 / (ch * ch) * kInvPi * dy;
+                    w = sech2_scale / (ch * ch) * kInvPi * dy;
                     t = alpha * std::exp(y);
                 } else {
-                    // (1/2) sech^2(x) dx = 2 v / (1 + v^2)^2 dv, v = e^(-|x|).
+                    // sech^2(x) dx = 4 v / (1 + v^2)^2 dv, v = e^(-|x|).
                     if (!(y > kSmallestV)) return {0.0, 0.0, 0.0};
-                    w = 2.0 * y / ((1.0 + y * y) * (1.0 + y * y)) * kInvPi * dy;
+                    w = 4.0 * sech2_scale * y / ((1.0 + y * y) * (1.0 + y * y)) * kInvPi * dy;
                     t = side < 0 ? alpha * y : alpha / y;
                 }
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const double size = kPi * std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
-                const double tol = std::min(kMaxInnerRel * size, inner_budget / w);
-                std::array<double, 3> r = ring_integral(f, t, tol, &inner_evals);
-                for (double& v : r) v *= w;
-                return r;
+                return inner(t, w, inner_budget, &inner_evals);
             },
             0.0, 1.0, panels, outer_opt);
         for (int c = 0; c < 2; ++c) {
@@ -319,6 +312,29 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, dou
         out.evaluations += e.evaluations + inner_evals;
     }
     return out;
+}
+
+}  // namespace
+
+Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, double abs_tol) {
+    if (!(mu_o >= 0.0) || !(eta > 0.0)) return {};
+    mu_o = std::clamp(mu_o, kGrazingMu, 1.0);
+    if (!(alpha > 0.0)) return smooth_limit(mu_o, eta);
+    const GlassIntegrand f(alpha, vis, mu_o, eta);
+    const double ln_alpha = std::log(alpha);
+    std::vector<double> xs;
+    for (double t : outer_breaks(f)) {
+        const double x = std::log(t) - ln_alpha;
+        if (std::isfinite(x)) xs.push_back(x);
+    }
+    return integrate_over_x(xs, alpha, 0.5, abs_tol,
+                            [&](double t, double w, double inner_budget, long long* evals) {
+                                const double size = kPi * std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
+                                const double tol = std::min(kMaxInnerRel * size, inner_budget / w);
+                                std::array<double, 3> r = ring_integral(f, t, tol, evals);
+                                for (double& v : r) v *= w;
+                                return r;
+                            });
 }
 
 Estimate<2> ggx_glass_average_over_mu(double alpha, double eta, Visibility vis, double abs_tol) {
@@ -508,63 +524,25 @@ std::array<double, 3> c_integral(const AverageIntegrand& f, double cos_h, double
 }  // namespace
 
 Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
-    Estimate<2> out;
-    if (!(eta > 0.0)) return out;
+    if (!(eta > 0.0)) return {};
     if (!(alpha > 0.0)) return ggx_glass_average_over_mu(alpha, eta, vis, abs_tol);
     const AverageIntegrand f(alpha, vis, eta);
-    // x = ln(tan(theta_h) / alpha) as in ggx_glass, split at +-kTailX and,
-    // inside, where sin(theta_h) reaches the critical c; the first and the
-    // last segment over v = e^(-|x|).
-    std::vector<double> xs{-HUGE_VAL, -kTailX, kTailX, HUGE_VAL};
+    // x = ln(tan(theta_h) / alpha) as in ggx_glass, split inside where
+    // sin(theta_h) reaches the critical c.
+    std::vector<double> xs;
     if (f.c_crit > 0.0) xs.push_back(std::log(f.c_crit / std::sqrt((1.0 - f.c_crit) * (1.0 + f.c_crit)) / alpha));
-    std::sort(xs.begin(), xs.end());
-    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-    const int segments = static_cast<int>(xs.size()) - 1;
-    AdaptiveOptions outer_opt;
-    outer_opt.abs_tol = 0.3 * abs_tol / segments;
-    outer_opt.controlled = 2;
-    outer_opt.rule = KronrodRule::k31;
-    outer_opt.max_intervals = 400;
-    const double inner_budget = 0.3 * abs_tol / segments;
-    for (int s = 0; s < segments; ++s) {
-        const double xa = xs[static_cast<std::size_t>(s)], xb = xs[static_cast<std::size_t>(s) + 1];
-        const int side = s == 0 ? -1 : s == segments - 1 ? 1 : 0;
-        const double y0 = side == 0 ? xa : side < 0 ? std::exp(xa) : std::exp(-xb);
-        const double len = (side == 0 ? xb : side < 0 ? std::exp(xb) : std::exp(-xa)) - y0;
-        const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
-        long long inner = 0;
-        const Estimate<3> e = integrate_adaptive_panels<3>(
-            [&](double u) -> std::array<double, 3> {
-                const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
-                // The measure D(h) dw_h with the azimuth of h integrated out is
-                // (1/2) sech^2(x) dx / cos(theta_h); with 1/pi and the two
-                // halves of psi: sech^2(x) / (pi cos(theta_h)) dx.
-                double w, t;
-                if (side == 0) {
-                    const double ch = std::cosh(y);
-                    w = 1.0 / (ch * ch) * kInvPi * dy;
-                    t = alpha * std::exp(y);
-                } else {
-                    if (!(y > kSmallestV)) return {0.0, 0.0, 0.0};
-                    w = 4.0 * y / ((1.0 + y * y) * (1.0 + y * y)) * kInvPi * dy;
-                    t = side < 0 ? alpha * y : alpha / y;
-                }
-                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
-                w /= cos_h;
-                const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
-                std::array<double, 3> r = c_integral(f, cos_h, sin_h, tol, &inner);
-                for (double& v : r) v *= w;
-                return r;
-            },
-            0.0, 1.0, panels, outer_opt);
-        for (int c = 0; c < 2; ++c) {
-            out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
-            out.error[static_cast<std::size_t>(c)] += 2.0 * e.error[static_cast<std::size_t>(c)] + e.value[2];
-        }
-        out.evaluations += e.evaluations + inner;
-    }
-    return out;
+    // The measure D(h) dw_h with the azimuth of h integrated out is
+    // (1/2) sech^2(x) dx / cos(theta_h); with 1/pi and the two halves of
+    // psi: sech^2(x) / (pi cos(theta_h)) dx.
+    return integrate_over_x(xs, alpha, 1.0, abs_tol,
+                            [&](double t, double w, double inner_budget, long long* evals) {
+                                const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
+                                w /= cos_h;
+                                const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
+                                std::array<double, 3> r = c_integral(f, cos_h, sin_h, tol, evals);
+                                for (double& v : r) v *= w;
+                                return r;
+                            });
 }
 
 }  // namespace brdflut
