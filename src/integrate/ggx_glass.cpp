@@ -43,6 +43,7 @@
 #include "brdflut/glass_integrals.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -68,6 +69,24 @@ constexpr double kMaxNestedTol = 1e-5;
 
 double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
 double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
+
+double acos_clamped(double x) { return x >= 1.0 ? 0.0 : x <= -1.0 ? kPi : std::acos(x); }
+
+// {F, 1 - F, cos_t} at c = wo.h: the exact unpolarized dielectric Fresnel
+// and the cosine of the refracted direction about h. {1, 0, 0} under total
+// internal reflection; with no interface (eta = 1) F = 0 exactly and the
+// ray goes straight on (cos_t = c).
+std::array<double, 3> fresnel_split(double c, double eta) {
+    if (eta == 1.0) return {0.0, 1.0, c};
+    const double ct2 = 1.0 - (1.0 - c * c) / (eta * eta);
+    if (!(ct2 > 0.0)) return {1.0, 0.0, 0.0};
+    const double cos_t = std::sqrt(ct2);
+    const double s_den = c + eta * cos_t, p_den = eta * c + cos_t;
+    const double rs = (c - eta * cos_t) / s_den, rp = (eta * c - cos_t) / p_den;
+    // 1 - F without cancellation: 1 - r^2 = 4 eta c cos_t / den^2.
+    return {0.5 * (rs * rs + rp * rp), 2.0 * eta * c * cos_t * (1.0 / (s_den * s_den) + 1.0 / (p_den * p_den)),
+            cos_t};
+}
 
 struct Ring {
     double a1, a0;  // c = a1 cos(phi) + a0
@@ -104,20 +123,7 @@ struct GlassIntegrand {
     std::array<double, 2> at_c(const Ring& q, double c) const {
         std::array<double, 2> y{0.0, 0.0};
         if (!(c > 0.0)) return y;
-        const double ct2 = 1.0 - (1.0 - c * c) / (eta * eta);
-        double F = 1.0, T = 0.0, cos_t = 0.0;
-        if (eta == 1.0) {  // no interface: F = 0 exactly, wt = -wo
-            F = 0.0;
-            T = 1.0;
-            cos_t = c;
-        } else if (ct2 > 0.0) {
-            cos_t = std::sqrt(ct2);
-            const double s_den = c + eta * cos_t, p_den = eta * c + cos_t;
-            const double rs = (c - eta * cos_t) / s_den, rp = (eta * c - cos_t) / p_den;
-            F = 0.5 * (rs * rs + rp * rp);
-            // 1 - F without cancellation: 1 - r^2 = 4 eta c cos_t / den^2.
-            T = 2.0 * eta * c * cos_t * (1.0 / (s_den * s_den) + 1.0 / (p_den * p_den));
-        }
+        const auto [F, T, cos_t] = fresnel_split(c, eta);
         const double w = c * q.scale;
         const double mu_r = 2.0 * c * q.cos_h - mu_o;
         if (mu_r > 0.0) y[0] = F * ggx.G2(mu_o, mu_r, vis) * w;
@@ -168,14 +174,13 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     for (int i = 1; i < n; ++i)  // insertion sort, descending
         for (int j = i; j > 0 && cs[static_cast<std::size_t>(j)] > cs[static_cast<std::size_t>(j) - 1]; --j)
             std::swap(cs[static_cast<std::size_t>(j)], cs[static_cast<std::size_t>(j) - 1]);
-    auto phi_of = [](double cp) { return cp >= 1.0 ? 0.0 : cp <= -1.0 ? kPi : std::acos(cp); };
     AdaptiveOptions opt;
     opt.abs_tol = tol / (n - 1);
     opt.controlled = 2;
     opt.max_intervals = 400;
-    double p0 = phi_of(cs[0]);
+    double p0 = acos_clamped(cs[0]);
     for (int j = 1; j < n; ++j) {
-        const double p1 = phi_of(cs[j]);
+        const double p1 = acos_clamped(cs[j]);
         const double len = p1 - p0;
         if (len > 0.0) {
             const Estimate<2> e = integrate_adaptive<2>(
@@ -399,21 +404,7 @@ struct AverageIntegrand {
 
     AverageIntegrand(double alpha, Visibility v, double e)
         : ggx{alpha}, vis(v), eta(e), c_crit(e < 1.0 ? std::sqrt((1.0 - e) * (1.0 + e)) : 0.0) {}
-
-    // {F, 1 - F, cos_t} at c (F = 1, cos_t = 0 under total internal reflection).
-    std::array<double, 3> fresnel(double c) const {
-        if (eta == 1.0) return {0.0, 1.0, c};
-        const double ct2 = 1.0 - (1.0 - c * c) / (eta * eta);
-        if (!(ct2 > 0.0)) return {1.0, 0.0, 0.0};
-        const double cos_t = std::sqrt(ct2);
-        const double s_den = c + eta * cos_t, p_den = eta * c + cos_t;
-        const double rs = (c - eta * cos_t) / s_den, rp = (eta * c - cos_t) / p_den;
-        return {0.5 * (rs * rs + rp * rp), 2.0 * eta * c * cos_t * (1.0 / (s_den * s_den) + 1.0 / (p_den * p_den)),
-                cos_t};
-    }
 };
-
-double acos_clamped(double x) { return x >= 1.0 ? 0.0 : x <= -1.0 ? kPi : std::acos(x); }
 
 // Integral over psi in [0, pi] at fixed (theta_h, c) of {G2 on the
 // reflection domain, G2 on the refraction domain, error estimate}.
@@ -506,7 +497,7 @@ std::array<double, 3> c_integral(const AverageIntegrand& f, double cos_h, double
                 const double c = c0 + len * smoothstep(u);
                 const double w = c * len * smoothstep_slope(u);
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const std::array<double, 3> fr = f.fresnel(c);
+                const std::array<double, 3> fr = fresnel_split(c, f.eta);
                 const bool refracts = fr[1] > 0.0;
                 const std::array<double, 3> k = psi_integral(f, cos_h, sin_h, c, fr[2], refracts,
                                                              std::min(kMaxInnerRel * kPi, inner_budget / w), &inner);
