@@ -47,12 +47,11 @@
 #include <cmath>
 #include <vector>
 
-#include "brdflut/fresnel.h"
+#include "integrate/glass_detail.h"
 
 namespace brdflut {
 namespace {
 
-constexpr double kGrazingMu = 1e-16;
 // Where the outer integral changes from x to v = e^(-|x|).
 constexpr double kTailX = 1.0;
 // Below this v the tails' weight (2 v dv) is negligible and t or 1/t overflows.
@@ -241,14 +240,6 @@ std::vector<double> outer_breaks(const GlassIntegrand& f) {
     return ts;
 }
 
-// The smooth interface (alpha = 0): {F(mu), 1 - F(mu)}.
-Estimate<2> smooth_limit(double mu_o, double eta) {
-    Estimate<2> out;
-    const double F = fresnel_dielectric(std::min(mu_o, 1.0), eta);
-    out.value = {F, 1.0 - F};
-    return out;
-}
-
 // The outer integral over x = ln(t / alpha), t = tan(theta_h), of ggx_glass
 // and ggx_glass_average. breaks: break points in x, beside x = +-kTailX.
 // sech2_scale sech^2(x) dx / pi is the outer weight w (1/2 for ggx_glass,
@@ -323,8 +314,8 @@ Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, do
 
 Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis, double abs_tol) {
     if (!(mu_o >= 0.0) || !(eta > 0.0)) return {};
-    mu_o = std::clamp(mu_o, kGrazingMu, 1.0);
-    if (!(alpha > 0.0)) return smooth_limit(mu_o, eta);
+    mu_o = std::clamp(mu_o, detail::kGlassGrazingMu, 1.0);
+    if (!(alpha > 0.0)) return detail::glass_smooth_limit(mu_o, eta);
     const GlassIntegrand f(alpha, vis, mu_o, eta);
     const double ln_alpha = std::log(alpha);
     std::vector<double> xs;
@@ -374,7 +365,7 @@ Estimate<2> ggx_glass_average_over_mu(double alpha, double eta, Visibility vis, 
                 const double mu = m0 + len * smoothstep(u);
                 const double w = 2.0 * mu * len * smoothstep_slope(u);
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
-                const Estimate<2> d = alpha > 0.0 ? ggx_glass(mu, alpha, eta, vis, tol) : smooth_limit(mu, eta);
+                const Estimate<2> d = alpha > 0.0 ? ggx_glass(mu, alpha, eta, vis, tol) : detail::glass_smooth_limit(mu, eta);
                 return {w * d.value[0], w * d.value[1], w * (d.error[0] + d.error[1])};
             },
             0.0, 1.0, opt);

@@ -24,11 +24,10 @@
 #include "brdflut/fresnel.h"
 #include "brdflut/glass_integrals.h"
 #include "brdflut/random.h"
+#include "integrate/glass_detail.h"
 
 namespace brdflut {
 namespace {
-
-constexpr double kGrazingMu = 1e-16;
 
 constexpr double kDefensive = 0.2;  // share of the wide density in x
 constexpr double kTailScale = 2.0;
@@ -136,20 +135,13 @@ struct RegressionAccumulator {
     }
 };
 
-Estimate<2> smooth(double mu, double eta) {
-    Estimate<2> out;
-    const double F = fresnel_dielectric(std::min(mu, 1.0), eta);
-    out.value = {F, 1.0 - F};
-    return out;
-}
-
 }  // namespace
 
 Estimate<2> ggx_glass_mc(double mu_o, double alpha, double eta, Visibility vis, long long samples,
                          std::uint64_t seed) {
     if (!(mu_o >= 0.0) || !(eta > 0.0)) return {};
-    mu_o = std::clamp(mu_o, kGrazingMu, 1.0);
-    if (!(alpha > 0.0)) return smooth(mu_o, eta);  // a delta lobe: nothing to sample
+    mu_o = std::clamp(mu_o, detail::kGlassGrazingMu, 1.0);
+    if (!(alpha > 0.0)) return detail::glass_smooth_limit(mu_o, eta);  // a delta lobe: nothing to sample
     const Ggx g{alpha};
     const Vec3 wo = direction_from_mu(mu_o);
     Rng rng(seed, 0);
@@ -175,7 +167,7 @@ Estimate<2> ggx_glass_average_mc(double alpha, double eta, Visibility vis, long 
         if (alpha > 0.0) {
             sample(g, vis, eta, direction_from_mu(mu), rng, w, &cv);
         } else {
-            const Estimate<2> e = smooth(mu, eta);
+            const Estimate<2> e = detail::glass_smooth_limit(mu, eta);
             w[0] = e.value[0];
             w[1] = e.value[1];
         }
