@@ -305,14 +305,18 @@ TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
 }
 
 TEST(LtcTables, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
-    // ltc_1's metadata maxima (exact light to 1e-4 of n0) against the
-    // per-texel channels of ltc_ggx_error on the same grid (to 1e-7).
+    // ltc_1's metadata maxima against the per-texel channels of
+    // ltc_ggx_error on the same grid, both with the exact light to 1e-5 of
+    // n0; the fits and reports computed anew for each table (the shared
+    // results cleared between them), the report stored in float.
     const TableDefinition& m = find_table("ltc_1");
     const TableDefinition& r = find_table("ltc_ggx_error");
     TableSettings s = default_settings(m);
     s.axes[0].count = 4;
     s.axes[1].count = 5;
-    const Table tm = generate(m, s), tr = generate(r, s);
+    const Table tm = generate(m, s);
+    clear_shared_results();
+    const Table tr = generate(r, s);
     const nlohmann::json& fe = tm.method.at("fit_error");
     double l3 = 0.0, below = 0.0, light = 0.0;
     for (std::size_t k = 0; k < tr.texel_count(); ++k) {
@@ -321,10 +325,10 @@ TEST(LtcTables, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
         light = std::max(light, tr.at(k, 2));
     }
     EXPECT_GT(light, 1e-3);  // the grid has grazing, rough texels: not a trivial maximum
-    EXPECT_NEAR(fe.at("light_error_max").get<double>(), light, 1e-4);
-    EXPECT_NEAR(fe.at("relative_l3_max").get<double>(), l3, 1e-12);
-    EXPECT_NEAR(fe.at("below_horizon_max").get<double>(), below, 1e-12);
-    EXPECT_DOUBLE_EQ(fe.at("light_tolerance").get<double>(), 1e-4);
+    EXPECT_EQ(static_cast<float>(fe.at("light_error_max").get<double>()), static_cast<float>(light));
+    EXPECT_EQ(static_cast<float>(fe.at("relative_l3_max").get<double>()), static_cast<float>(l3));
+    EXPECT_EQ(static_cast<float>(fe.at("below_horizon_max").get<double>()), static_cast<float>(below));
+    EXPECT_DOUBLE_EQ(fe.at("light_tolerance").get<double>(), 1e-5);
 }
 
 TEST(LtcCompare, AFileOfTheRefitLightsAsTheRefitAndATransposedOneDoesNot) {

@@ -575,7 +575,7 @@ LtcFitOptions ltc_fit_options(int quality_level) {
     if (quality_level <= 0) {
         o.radial_nodes = 16;
         o.azimuth_nodes = 10;
-        o.light_tolerance = 1e-5;
+        o.light_tolerance = 1e-4;
     } else if (quality_level >= 2) {
         o.radial_nodes = 56;
         o.azimuth_nodes = 32;
