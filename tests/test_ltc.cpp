@@ -18,6 +18,7 @@
 #include "brdflut/exr.h"
 #include "brdflut/formats.h"
 #include "brdflut/lut.h"
+#include "integrate/ltc_simd.h"
 #include "test_support.h"
 
 namespace brdflut {
@@ -172,6 +173,46 @@ TEST(LtcFit, EveryFittedTexelIsALocalMinimumOfTheObjective) {
                 EXPECT_GE(j, j0 * (1.0 - 1e-9)) << "t=" << x.t << " a=" << x.a << " parameter " << k;
             }
     }
+}
+
+TEST(LtcFit, EveryObjectivePathGivesTheSameBits) {
+    // The objective sums its grid two nodes at a time (SSE2) or one at a
+    // time; each must give the same bits, at the fit and at parameters
+    // around it, so that the fits are the same whichever path runs. Lobes:
+    // GGX smooth and grazing, smooth, rough at normal view, the sheen and
+    // EON lobes.
+    const int widest = detail::ltc_objective_simd_width();
+    const LtcLobe lobes[] = {LtcLobe(0.02, 1e-4, Visibility::height_correlated),
+                             LtcLobe(0.6, 0.2, Visibility::separable),
+                             LtcLobe(1.0, 1.0, Visibility::height_correlated),
+                             LtcLobe(LtcLobeKind::charlie_sheen, 0.3, 0.2),
+                             LtcLobe(LtcLobeKind::eon, 0.1, 0.7)};
+    const LtcFitOptions opt = ltc_fit_options(0);
+    auto run = [&](int width) {
+        detail::set_ltc_objective_simd_width(width);
+        std::vector<LtcFit> fits;
+        std::vector<double> values;
+        for (const LtcLobe& l : lobes) {
+            fits.push_back(fit_ltc(l, opt));
+            for (int k = 0; k < 40; ++k) {
+                std::array<double, 4> p = fits.back().params;
+                p[k % 4] += 0.05 * (k / 4 - 4.5);  // below and beyond the horizon too
+                values.push_back(ltc_objective(l, p, opt));
+            }
+        }
+        return std::make_pair(fits, values);
+    };
+    const auto one = run(1);
+    if (detail::set_ltc_objective_simd_width(2) == 2) {
+        const auto two = run(2);
+        for (std::size_t n = 0; n < one.first.size(); ++n) {
+            EXPECT_EQ(two.first[n].params, one.first[n].params) << "lobe " << n;
+            EXPECT_EQ(two.first[n].evaluations, one.first[n].evaluations) << "lobe " << n;
+        }
+        for (std::size_t n = 0; n < one.second.size(); ++n)
+            EXPECT_EQ(two.second[n], one.second[n]) << "point " << n;
+    }
+    EXPECT_EQ(detail::set_ltc_objective_simd_width(widest), widest);
 }
 
 TEST(LtcFit, NormAndFresnelMomentMatchGgxAlbedoAndDfg) {
