@@ -180,20 +180,23 @@ TEST(LtcFit, EveryObjectivePathGivesTheSameBits) {
     // time; each must give the same bits, at the fit and at parameters
     // around it, so that the fits are the same whichever path runs. Lobes:
     // GGX smooth and grazing, smooth, rough at normal view, the sheen and
-    // EON lobes.
+    // EON lobes; on the draft grid and on one padded to whole lanes.
     const int widest = detail::ltc_objective_simd_width();
     const LtcLobe lobes[] = {LtcLobe(0.02, 1e-4, Visibility::height_correlated),
                              LtcLobe(0.6, 0.2, Visibility::separable),
                              LtcLobe(1.0, 1.0, Visibility::height_correlated),
                              LtcLobe(LtcLobeKind::charlie_sheen, 0.3, 0.2),
                              LtcLobe(LtcLobeKind::eon, 0.1, 0.7)};
-    const LtcFitOptions opt = ltc_fit_options(0);
+    LtcFitOptions opt = ltc_fit_options(0);
+    LtcFitOptions odd = opt;  // a grid that is not whole groups of four nodes: padded
+    odd.azimuth_nodes = 7;
     auto run = [&](int width) {
         detail::set_ltc_objective_simd_width(width);
         std::vector<LtcFit> fits;
         std::vector<double> values;
         for (const LtcLobe& l : lobes) {
             fits.push_back(fit_ltc(l, opt));
+            fits.push_back(fit_ltc(l, odd));
             for (int k = 0; k < 40; ++k) {
                 std::array<double, 4> p = fits.back().params;
                 p[k % 4] += 0.05 * (k / 4 - 4.5);  // below and beyond the horizon too
@@ -338,11 +341,49 @@ TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
         o1.threads = 1;
         o2.threads = 2;
         oall.threads = 0;
-        const Table a = generate(def, s, o1), b = generate(def, s, o2), c = generate(def, s, oall);
+        // Each run fits every texel itself (no fit shared from the last).
+        clear_shared_results();
+        const Table a = generate(def, s, o1);
+        clear_shared_results();
+        const Table b = generate(def, s, o2);
+        clear_shared_results();
+        const Table c = generate(def, s, oall);
         EXPECT_EQ(a.values, b.values) << id;
         EXPECT_EQ(a.values, c.values) << id;
         EXPECT_EQ(a.method.dump(), c.method.dump()) << id;
     }
+}
+
+TEST(LtcTables, SharedFitsGiveTheValuesOfFreshOnes) {
+    // A matrix table and its error table share each texel's fit and report
+    // in one run, keyed by the lobe and the fit's options. Generated after
+    // ltc_1 at default settings, each of these must hold what it holds when
+    // generated alone: the error table, the other visibility, HDRP's layout
+    // (its alpha floor at roughness 0 and 1/3 here), another quality.
+    auto small = [](const char* id) {
+        TableSettings s = default_settings(find_table(id));
+        s.axes[0].count = 4;
+        s.axes[1].count = 4;
+        return s;
+    };
+    TableSettings separable = small("ltc_1");
+    separable.params["visibility"] = "separable";
+    TableSettings draft = small("ltc_ggx_error");
+    draft.quality = Quality::draft;
+    const std::vector<std::pair<const char*, TableSettings>> after = {
+        {"ltc_ggx_error", small("ltc_ggx_error")}, {"ltc_1", separable}, {"hdrp_ltc_ggx", small("hdrp_ltc_ggx")},
+        {"ltc_ggx_error", draft}};
+    for (const auto& [id, s] : after) {
+        SCOPED_TRACE(id);
+        clear_shared_results();
+        const Table fresh = generate(find_table(id), s);
+        clear_shared_results();
+        generate(find_table("ltc_1"), small("ltc_1"));
+        const Table shared = generate(find_table(id), s);
+        EXPECT_EQ(shared.values, fresh.values);
+        EXPECT_EQ(shared.method.dump(), fresh.method.dump());
+    }
+    clear_shared_results();
 }
 
 TEST(LtcTables, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {
@@ -405,7 +446,9 @@ TEST(LtcTables, HdrpLayoutIsTheHeitzMatrixRenormalized) {
     TableSettings s = default_settings(h);
     s.axes[0].count = 4;
     s.axes[1].count = 4;
-    const Table th = generate(h, s), tu = generate(u, s);
+    const Table th = generate(h, s);
+    clear_shared_results();  // HDRP's own fits
+    const Table tu = generate(u, s);
     for (std::size_t k = 0; k < th.texel_count(); ++k) {
         if (k % 4 == 0) continue;  // roughness 0: HDRP fits at alpha >= 1e-3, Heitz at 1e-5
         const double a = th.at(k, 0), c = th.at(k, 1), b = th.at(k, 2), d = th.at(k, 3);

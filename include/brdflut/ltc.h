@@ -158,7 +158,7 @@ struct LtcFitOptions {
     int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
     int azimuth_nodes = 16;  // rays about the lobe's peak on [0, pi]
     // Of each exact light integral of the error report, relative to n0 (the
-    // light errors it reports are 1e-3 and more where they matter).
+    // light errors that matter are 1e-3 of n0 and more).
     double light_tolerance = 1e-5;
 };
 // Options for a quality (draft, standard, reference).

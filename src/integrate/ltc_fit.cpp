@@ -191,12 +191,13 @@ SphereGrid make_grid(const LtcLobe& lobe, double n0, const LobeFrame& f, int rad
         add_panel(up, 0.0, u_h, true);
         add_panel(low, u_h, 1.0, false);
     }
-    // Padded to whole groups of the objective's lanes with nodes of weight
-    // 0 (at the normal, where D is finite): they add exactly 0 to every sum.
+    // Padded to whole groups of the objective's lanes with copies of the
+    // last node of weight 0 and p = 0: they add exactly +0 to every sum
+    // wherever that node's D is finite.
     while (g.x.size() % kObjectiveLanes != 0) {
-        g.x.push_back(0.0);
-        g.y.push_back(0.0);
-        g.z.push_back(1.0);
+        g.x.push_back(g.x.back());
+        g.y.push_back(g.y.back());
+        g.z.push_back(g.z.back());
         g.w.push_back(0.0);
         g.p.push_back(0.0);
     }
@@ -441,11 +442,13 @@ ObjectiveSums objective_sums_sse2(const SphereGrid& g, const Mat3& minv, double 
             const __m128d p = _mm_loadu_pd(&g.p[k]), w = _mm_loadu_pd(&g.w[k]);
             const __m128d on = _mm_cmpgt_pd(p, zero);
             const __m128d e = _mm_andnot_pd(sign, _mm_sub_pd(p, d)), den = _mm_add_pd(p, d);
-            // Where p = 0 the quotient may be 0 / 0: masked off.
-            const __m128d t = _mm_and_pd(on, _mm_div_pd(_mm_mul_pd(_mm_mul_pd(w, e), e), den));
+            // Where p = 0 the quotient may be 0 / 0: masked off (after every
+            // operation, so that no masked lane's NaN or inf reaches a sum).
+            const __m128d t = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(w, e), e), den);
             const __m128d wd = _mm_mul_pd(w, d);
-            heitz[h] = _mm_add_pd(heitz[h], _mm_or_pd(_mm_mul_pd(t, e), _mm_andnot_pd(on, _mm_mul_pd(wd, d))));
-            tri[h] = _mm_add_pd(tri[h], t);
+            heitz[h] = _mm_add_pd(heitz[h], _mm_or_pd(_mm_and_pd(on, _mm_mul_pd(t, e)),
+                                                      _mm_andnot_pd(on, _mm_mul_pd(wd, d))));
+            tri[h] = _mm_add_pd(tri[h], _mm_and_pd(on, t));
             inside[h] = _mm_add_pd(inside[h], _mm_and_pd(on, wd));
         }
     }
@@ -681,7 +684,7 @@ LtcFitOptions ltc_fit_options(int quality_level) {
     } else if (quality_level >= 2) {
         o.radial_nodes = 56;
         o.azimuth_nodes = 32;
-        o.light_tolerance = 1e-9;
+        o.light_tolerance = 1e-8;
     }
     return o;
 }

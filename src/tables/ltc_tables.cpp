@@ -280,8 +280,7 @@ TableDefinition make(const Entry& e) {
         if (layout == Layout::report)
             p.method["lights"] = "the bank of ltc_light_bank: squares of 1 to 60 degrees in the peak, off "
                                  "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
-                                 "the polygon, relative tolerance " +
-                                 std::to_string(opt.light_tolerance);
+                                 "the polygon, each light to light_tolerance of n0";
         const std::string report_id = report_table(kind);
         p.finish = [figures, layout, opt, report_id](Table& t) {
             nlohmann::json fe;
@@ -300,6 +299,7 @@ TableDefinition make(const Entry& e) {
                                "over the bank, as fractions of n0";
             }
             if (layout == Layout::report) {
+                fe["light_tolerance"] = opt.light_tolerance;
                 const char* names[4] = {"relative_l3", "below_horizon", "light_error_max", "light_error_mean"};
                 for (int c = 0; c < 4; ++c) {
                     std::vector<double> v;

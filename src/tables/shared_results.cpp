@@ -1,6 +1,6 @@
 #include "tables/shared_results.h"
 
-#include <vector>
+#include <map>
 
 #include "brdflut/catalogue.h"
 
@@ -9,7 +9,8 @@ namespace tables {
 namespace {
 struct Clearers {
     std::mutex mutex;
-    std::vector<std::function<void()>> list;
+    std::map<std::size_t, std::function<void()>> list;
+    std::size_t next = 0;
 };
 Clearers& clearers() {
     static Clearers c;
@@ -17,17 +18,24 @@ Clearers& clearers() {
 }
 }  // namespace
 
-void register_shared_results(std::function<void()> clear) {
+std::size_t register_shared_results(std::function<void()> clear) {
     Clearers& c = clearers();
     const std::lock_guard<std::mutex> lock(c.mutex);
-    c.list.push_back(std::move(clear));
+    c.list.emplace(c.next, std::move(clear));
+    return c.next++;
+}
+
+void unregister_shared_results(std::size_t id) {
+    Clearers& c = clearers();
+    const std::lock_guard<std::mutex> lock(c.mutex);
+    c.list.erase(id);
 }
 }  // namespace tables
 
 void clear_shared_results() {
     tables::Clearers& c = tables::clearers();
     const std::lock_guard<std::mutex> lock(c.mutex);
-    for (const auto& clear : c.list) clear();
+    for (const auto& [id, clear] : c.list) clear();
 }
 
 }  // namespace brdflut

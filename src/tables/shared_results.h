@@ -20,18 +20,23 @@
 
 namespace brdflut::tables {
 
-// Registers a cache's clear function with clear_shared_results().
-void register_shared_results(std::function<void()> clear);
+// Registers a cache's clear function with clear_shared_results(); the
+// returned id unregisters it.
+std::size_t register_shared_results(std::function<void()> clear);
+void unregister_shared_results(std::size_t id);
 
 template <std::size_t K, class Value>
 class SharedResults {
 public:
     using Key = std::array<std::uint64_t, K>;
 
-    // max_entries bounds the cache (the memory is max_entries values).
-    explicit SharedResults(std::size_t max_entries) : max_per_shard_(max_entries / kShards + 1) {
-        register_shared_results([this] { clear(); });
-    }
+    // At most max_entries values (rounded up to a multiple of the shard
+    // count); a full shard stops caching.
+    explicit SharedResults(std::size_t max_entries)
+        : max_per_shard_((max_entries + kShards - 1) / kShards), id_(register_shared_results([this] { clear(); })) {}
+    ~SharedResults() { unregister_shared_results(id_); }
+    SharedResults(const SharedResults&) = delete;
+    SharedResults& operator=(const SharedResults&) = delete;
 
     // The value of key; compute() makes it when it is not cached. *computed
     // tells whether this call computed it (false: taken from an earlier call).
@@ -76,6 +81,7 @@ private:
     };
     static constexpr std::size_t kShards = 64;
     std::size_t max_per_shard_;
+    std::size_t id_;
     std::array<Shard, kShards> shards_;
 };
 
