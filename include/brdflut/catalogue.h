@@ -107,8 +107,10 @@ const Preset& find_preset(const std::string& name);
 std::vector<const TableDefinition*> preset_tables(const std::string& name);
 
 // Forgets the intermediate results that tables generated in one process
-// share (the GGX split sums that ggx_albedo takes from ggx_dfg). No value
-// depends on them; a benchmark calls this so that each run does all its work.
+// share (the GGX split sums that ggx_albedo takes from ggx_dfg, the LTC fits
+// and error reports that a matrix table and its _error table take from each
+// other). No value depends on them; a benchmark calls this so that each run
+// does all its work.
 void clear_shared_results();
 
 // The defaults of a table: its axes and the default of every option.

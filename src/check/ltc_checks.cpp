@@ -139,9 +139,11 @@ void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
             }};
     };
     // The light errors differ by the exact light's own error, at most the
-    // metadata's tolerance (1e-4 of n0) per light.
+    // metadata's tolerance per light (ltc_fit_options at default quality,
+    // the quality metadata_maxima_error generates at).
     auto maxima = [](const std::string& id) {
-        return ClosedFormCheck{"metadata error maxima (light, L3, below horizon) vs recomputation", 1e-4,
+        return ClosedFormCheck{"metadata error maxima (light, L3, below horizon) vs recomputation",
+                               ltc_fit_options(1).light_tolerance,
                                [id](const TexelEvaluator&) { return metadata_maxima_error(id); }};
     };
     for (const char* id : {"ltc_1", "ltc_sheen_charlie", "ltc_eon"}) m[id] = {local_minimum(id), maxima(id)};

@@ -2,15 +2,12 @@
 //
 // Karis 2013, "Real Shading in Unreal Engine 4" (split-sum approximation)
 // Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks"
-#include <bit>
-#include <cstdint>
 #include <memory>
-#include <mutex>
-#include <unordered_map>
 
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/random.h"
 #include "tables/registry.h"
+#include "tables/shared_results.h"
 
 namespace brdflut {
 namespace {
@@ -48,71 +45,9 @@ nlohmann::json ggx_model(Visibility vis) {
 enum class Kind { dfg, albedo, albedo_avg };
 
 // Split sums computed in this process, shared by the tables of one run:
-// ggx_albedo is A + B of ggx_dfg's texels. Keyed by the exact arguments; the
-// integrator is deterministic, so a hit returns bit for bit what a fresh call
-// would: the cache only avoids recomputing, it never changes a value, whatever
-// the thread count or the other tables generated. Sharded to keep lock
-// contention low; bounded (beyond the bound, values are simply recomputed).
-class SplitSumCache {
-public:
-    // The split sum; *computed tells whether this call computed it (false:
-    // taken from an earlier call).
-    Estimate<2> get(double mu, double alpha, Visibility vis, double tol, bool* computed) {
-        const Key key{mu, alpha, tol, vis};
-        Shard& shard = shards_[KeyHash{}(key) % kShards];
-        *computed = false;
-        {
-            const std::lock_guard<std::mutex> lock(shard.mutex);
-            const auto it = shard.map.find(key);
-            if (it != shard.map.end()) return it->second;
-        }
-        *computed = true;
-        const Estimate<2> e = ggx_split_sum(mu, alpha, vis, tol);
-        const std::lock_guard<std::mutex> lock(shard.mutex);
-        if (shard.map.size() < kMaxPerShard) shard.map.emplace(key, e);
-        return e;
-    }
-
-    void clear() {
-        for (Shard& shard : shards_) {
-            const std::lock_guard<std::mutex> lock(shard.mutex);
-            shard.map.clear();
-        }
-    }
-
-private:
-    struct Key {
-        double mu, alpha, tol;
-        Visibility vis;
-        bool operator==(const Key& o) const {
-            return std::bit_cast<std::uint64_t>(mu) == std::bit_cast<std::uint64_t>(o.mu) &&
-                   std::bit_cast<std::uint64_t>(alpha) == std::bit_cast<std::uint64_t>(o.alpha) &&
-                   std::bit_cast<std::uint64_t>(tol) == std::bit_cast<std::uint64_t>(o.tol) &&
-                   vis == o.vis;
-        }
-    };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const {
-            std::uint64_t h = static_cast<std::uint64_t>(k.vis) + 0x9e3779b97f4a7c15ULL;
-            for (double d : {k.mu, k.alpha, k.tol}) {
-                h ^= std::bit_cast<std::uint64_t>(d) + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
-                h *= 0xbf58476d1ce4e5b9ULL;
-                h ^= h >> 31;
-            }
-            return static_cast<std::size_t>(h);
-        }
-    };
-    struct Shard {
-        std::mutex mutex;
-        std::unordered_map<Key, Estimate<2>, KeyHash> map;
-    };
-    static constexpr std::size_t kShards = 64;
-    static constexpr std::size_t kMaxPerShard = 1 << 12;  // 262,144 texels in all (~25 MB)
-    std::array<Shard, kShards> shards_;
-};
-
-SplitSumCache& split_sum_cache() {
-    static SplitSumCache cache;
+// ggx_albedo is A + B of ggx_dfg's texels (262,144 texels at most, ~25 MB).
+tables::SharedResults<4, Estimate<2>>& split_sum_cache() {
+    static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
     return cache;
 }
 
@@ -138,7 +73,10 @@ public:
         const double mu = c[0], alpha = c[1];
         bool computed = true;
         const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
-                                 : split_sum_cache().get(mu, alpha, vis_, abs_tol_, &computed);
+                                 : split_sum_cache().get(
+                                       {tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol_),
+                                        tables::key_enum(vis_)},
+                                       [&] { return ggx_split_sum(mu, alpha, vis_, abs_tol_); }, &computed);
         if (computed) out.evaluations = e.evaluations;
         const double scale = mc ? tables::kMcErrorSigmas : 1.0;
         if (kind_ == Kind::dfg) {
@@ -184,8 +122,6 @@ TableDefinition make(Kind kind, std::string id, std::string description,
 }
 
 }  // namespace
-
-void clear_shared_results() { split_sum_cache().clear(); }
 
 void register_ggx_tables(std::vector<TableDefinition>& out) {
     using namespace tables;

@@ -15,6 +15,7 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "tables/registry.h"
+#include "tables/shared_results.h"
 
 namespace brdflut {
 namespace {
@@ -35,13 +36,32 @@ struct FitFigures {
     std::vector<double> objective, below_horizon, relative_l3, light_max;
 };
 
-// The tolerance of the exact light behind the matrix tables' metadata
-// figures, relative to n0 (each light's integral within it): the errors
-// they summarize are 1e-3 and more where they matter (the largest 0.19, the
-// median 0.01), and the exact light at the quality's tolerance (1e-7 at
-// default) costs twice the fit, at 1e-4 about as much as the fit.
-// ltc_ggx_error computes every texel's figures at the quality's tolerance.
-constexpr double kSummaryLightTolerance = 1e-4;
+// A texel's fit and its error report (the exact light at the quality's
+// tolerance), shared by the tables of one run that fit the same lobe:
+// ltc_1, ltc_ggx_error and hdrp_ltc_ggx (where its alpha floor does not
+// apply), each lobe's matrix table and its _error table. Keyed by the lobe
+// and the fit's options; 65,536 texels at most (~15 MB).
+struct TexelFit {
+    LtcFit fit;
+    LtcTexelReport report;
+};
+tables::SharedResults<7, TexelFit>& texel_fit_cache() {
+    static tables::SharedResults<7, TexelFit> cache(1 << 16);
+    return cache;
+}
+TexelFit texel_fit(const LtcLobe& lobe, const LtcFitOptions& opt) {
+    using tables::key_bits;
+    return texel_fit_cache().get(
+        {tables::key_enum(lobe.kind), tables::key_enum(lobe.vis), key_bits(lobe.mu_o), key_bits(lobe.param),
+         static_cast<std::uint64_t>(opt.radial_nodes), static_cast<std::uint64_t>(opt.azimuth_nodes),
+         key_bits(opt.light_tolerance)},
+        [&] {
+            TexelFit t;
+            t.fit = fit_ltc(lobe, opt);
+            t.report = ltc_texel_report(lobe, t.fit.minv.matrix(), t.fit.n0, opt);
+            return t;
+        });
+}
 
 bool is_matrix(Layout l) { return l == Layout::heitz_matrix || l == Layout::hdrp_matrix; }
 // The norm tables hold exact integrals and the sphere form factor, not the
@@ -81,16 +101,14 @@ public:
             out.error = {n.n0_error, n.n1_error, 0.0, 0.0};
             return out;
         }
-        const LtcFit fit = fit_ltc(lobe, opt_);
+        const TexelFit tf = texel_fit(lobe, opt_);
+        const LtcFit& fit = tf.fit;
         if (figures_ && texel < figures_->objective.size()) {
             figures_->objective[texel] = fit.objective;
             figures_->below_horizon[texel] = fit.below_horizon;
             if (is_matrix(layout_)) {
-                LtcFitOptions summary = opt_;
-                summary.light_tolerance = std::max(opt_.light_tolerance, kSummaryLightTolerance);
-                const LtcTexelReport rep = ltc_texel_report(lobe, fit.minv.matrix(), fit.n0, summary);
-                figures_->relative_l3[texel] = rep.relative_l3;
-                figures_->light_max[texel] = rep.light_max;
+                figures_->relative_l3[texel] = tf.report.relative_l3;
+                figures_->light_max[texel] = tf.report.light_max;
             }
         }
         const LtcInverse& m = fit.minv;
@@ -102,7 +120,7 @@ public:
                 out.value = {m.a / m.d, m.c / m.d, 1.0 / m.d, m.b / m.d};
                 break;
             case Layout::report: {
-                const LtcTexelReport rep = ltc_texel_report(lobe, m.matrix(), fit.n0, opt_);
+                const LtcTexelReport& rep = tf.report;
                 out.value = {rep.relative_l3, rep.below_horizon, rep.light_max, rep.light_mean};
                 break;
             }
@@ -262,8 +280,7 @@ TableDefinition make(const Entry& e) {
         if (layout == Layout::report)
             p.method["lights"] = "the bank of ltc_light_bank: squares of 1 to 60 degrees in the peak, off "
                                  "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
-                                 "the polygon, relative tolerance " +
-                                 std::to_string(opt.light_tolerance);
+                                 "the polygon, each light to light_tolerance of n0";
         const std::string report_id = report_table(kind);
         p.finish = [figures, layout, opt, report_id](Table& t) {
             nlohmann::json fe;
@@ -277,11 +294,12 @@ TableDefinition make(const Entry& e) {
                 fe["relative_l3_median"] = median(figures->relative_l3);
                 fe["light_error_max"] = *std::max_element(figures->light_max.begin(), figures->light_max.end());
                 fe["light_error_median"] = median(figures->light_max);
-                fe["light_tolerance"] = std::max(opt.light_tolerance, kSummaryLightTolerance);
+                fe["light_tolerance"] = opt.light_tolerance;
                 fe["lights"] = "the bank of ltc_light_bank (as " + report_id + "); light errors are the largest "
                                "over the bank, as fractions of n0";
             }
             if (layout == Layout::report) {
+                fe["light_tolerance"] = opt.light_tolerance;
                 const char* names[4] = {"relative_l3", "below_horizon", "light_error_max", "light_error_mean"};
                 for (int c = 0; c < 4; ++c) {
                     std::vector<double> v;
