@@ -394,12 +394,31 @@ Interval<N> kronrod_panel_k(F& f, double a, double b, std::size_t controlled) {
         panel_sums<K, N>(y, k, g, asc);
     Interval<N> r{a, b, {}, {}, 0.0};
     const double abs_h = std::abs(h);
-    for (std::size_t i = 0; i < N; ++i) {
-        const double err = kronrod_error((k[i] - g[i]) * h, asc[i] * abs_h, k[i] * h);
-        r.value[i] = k[i] * h;
-        r.error[i] = err;
-        if (i < controlled) r.worst = std::max(r.worst, err);
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    // Two channels at a time: kronrod_error's operations lane by lane (the
+    // division and square root are correctly rounded, min and max select as
+    // std::min(1, q) and std::max(err, floor)), so the same bits.
+    for (; i + 2 <= N; i += 2) {
+        const __m128d hv = _mm_set1_pd(h), zero = _mm_setzero_pd(), sign = _mm_set1_pd(-0.0);
+        const __m128d kv = _mm_loadu_pd(&k[i]);
+        const __m128d integral = _mm_mul_pd(kv, hv);
+        const __m128d diff = _mm_andnot_pd(sign, _mm_mul_pd(_mm_sub_pd(kv, _mm_loadu_pd(&g[i])), hv));
+        const __m128d resasc = _mm_mul_pd(_mm_loadu_pd(&asc[i]), _mm_set1_pd(abs_h));
+        const __m128d use = _mm_and_pd(_mm_cmpneq_pd(resasc, zero), _mm_cmpneq_pd(diff, zero));
+        const __m128d q = _mm_min_pd(_mm_div_pd(_mm_mul_pd(_mm_set1_pd(200.0), diff), resasc), _mm_set1_pd(1.0));
+        const __m128d scaled = _mm_mul_pd(_mm_mul_pd(resasc, q), _mm_sqrt_pd(q));
+        const __m128d err = _mm_or_pd(_mm_and_pd(use, scaled), _mm_andnot_pd(use, diff));
+        const __m128d floor = _mm_mul_pd(_mm_set1_pd(50.0 * 2.220446049250313e-16), _mm_andnot_pd(sign, integral));
+        _mm_storeu_pd(&r.value[i], integral);
+        _mm_storeu_pd(&r.error[i], _mm_max_pd(floor, err));
     }
+#endif
+    for (; i < N; ++i) {
+        r.value[i] = k[i] * h;
+        r.error[i] = kronrod_error((k[i] - g[i]) * h, asc[i] * abs_h, k[i] * h);
+    }
+    for (std::size_t c = 0; c < N && c < controlled; ++c) r.worst = std::max(r.worst, r.error[c]);
     return r;
 }
 
@@ -426,7 +445,8 @@ namespace detail {
 // (out.evaluations counts those already evaluated).
 template <std::size_t N, class F>
 Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOptions& opt, Estimate<N> out) {
-    heap.reserve(std::max(heap.size(), static_cast<std::size_t>(opt.max_intervals)) + 1);
+    // Room for the usual few bisections (more grow the vector as needed).
+    heap.reserve(std::max(heap.size(), static_cast<std::size_t>(std::min(opt.max_intervals, 16))) + 1);
     auto less = [](const Interval<N>& p, const Interval<N>& q) { return p.worst < q.worst; };
     std::make_heap(heap.begin(), heap.end(), less);
     const int per_panel = kronrod_points(opt.rule);
