@@ -537,9 +537,10 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
     const double ln_alpha = std::log(alpha);
 
     // (1/2) sech^2(x) / pi: the measure in x times the phi normalization,
-    // with phi integrated over [0, pi] only (the integrand is even in phi).
-    auto weight = [](double x) {
-        const double c = std::cosh(x);
+    // with phi integrated over [0, pi] only (the integrand is even in phi),
+    // from e = exp(x) (cosh(x) = (e + 1 / e) / 2), which gives t = alpha e too.
+    auto weight = [](double e) {
+        const double c = 0.5 * (e + 1.0 / e);
         return 0.5 / (c * c) * kInvPi;
     };
 
@@ -660,13 +661,14 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
 
     // Outer integrand in x, weighted by w(x) jac: {A, B, accumulated inner error}.
     auto outer = [&](double x, bool clipped, double jac, double span) -> std::array<double, 3> {
-        const double t = alpha * std::exp(x);
+        const double e = std::exp(x);
+        const double t = alpha * e;
         double c = -2.0;  // cos(phi_max); -2: the full circle
         if (clipped) {
             c = detail::reflection_cos_phi_max(t, mu_o, sin_o);
             if (c >= 1.0) return {0.0, 0.0, 0.0};
         }
-        const double w = weight(x) * jac;
+        const double w = weight(e) * jac;
         const double size = std::max(1.0, std::sqrt(1.0 + t * t) / mu_o);
         std::array<double, 3> r = c > -1.0 ? clipped_circle(t, c, inner_tol(w, span, kMaxClippedTol * size))
                                            : full_circle(t, inner_tol(w, span));
