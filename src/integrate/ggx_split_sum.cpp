@@ -13,22 +13,23 @@
 //   t_a < t < t_b = (1 + sin(theta_o)) / mu_o   |phi| < acos(c(t))
 //   t >= t_b                                      none.
 // The outer variable is integrated with adaptive Gauss-Kronrod (15, 31) in
-// three ranges: up to t = alpha in xi = t^2 / (alpha^2 + t^2) (uniform
-// measure), then in x up to t_a, then across the clipped band; both x ranges
-// are flattened by a change of variable at t_a, where the phi integral
-// behaves like (t - t_a)^(3/2) (and G2 dips where the reflected direction
-// grazes the horizon). The full circle in phi uses the doubling trapezoidal
-// rule (cosines from a table); a clipped range uses Gauss-Kronrod in
-// tan(phi / 2), where the integrand is rational: one (7, 15) or (10, 21)
-// panel where G2's branch points lie far from the arc against its length,
-// else (or when that panel misses the tolerance) adaptive (15, 31). Each inner integral gets
-// the tolerance its outer weight requires (budget / (weight * range)), and
-// its error estimate is integrated along with the values, so the reported
-// error covers both levels. The phi integrands are evaluated four nodes at
-// a time with AVX2 when the processor has it, else two with SSE2, by exactly
-// the operations of one node at a time (ggx_phi_kernels.inc), and with AVX2
-// the arcs' Kronrod panel sums take two nodes per register by the operations
-// of detail::panel_sums, so the values do not depend on the machine.
+// three ranges: up to t = min(alpha, t_a) in xi = t^2 / (alpha^2 + t^2)
+// (uniform measure; (7, 15) there), then in x up to t_a, then across the
+// clipped band; both x ranges are flattened by a change of variable at t_a,
+// where the phi integral behaves like (t - t_a)^(3/2) (and G2 dips where the
+// reflected direction grazes the horizon). The full circle in phi uses the
+// doubling trapezoidal rule (cosines from a table); a clipped range uses
+// Gauss-Kronrod in tan(phi / 2), where the integrand is rational: one (7, 15)
+// or (10, 21) panel where G2's branch points lie far from the arc against its
+// length, else (or when that panel misses the tolerance) adaptive (15, 31).
+// Each inner integral gets the tolerance its outer weight requires (budget /
+// (weight * range)), and its error estimate is integrated along with the
+// values, so the reported error covers both levels. The phi integrands are
+// evaluated four nodes at a time with AVX2 when the processor has it, else two
+// with SSE2, by exactly the operations of one node at a time
+// (ggx_phi_kernels.inc), and with AVX2 the arcs' Kronrod panel sums take two
+// nodes per register by the operations of detail::panel_sums, so the values do
+// not depend on the machine.
 #include "brdflut/ggx_integrals.h"
 
 #include <cmath>
@@ -696,11 +697,13 @@ Estimate<2> ggx_split_sum(double mu_o, double alpha, Visibility vis, double abs_
         const double tol = inner_tol(kInvPi, xi_end);
         // When the whole of xi in [0, 1/2] is a full circle (x_a > 0), the
         // integrand is analytic there with its nearest singularity at
-        // xi = 1 (t -> infinity; it depends on t^2 only), so the (7, 15)
-        // Kronrod panel suffices; otherwise the range ends at t_a, where
-        // G2's dip appears, and needs the (15, 31) rule.
+        // xi = 1 (t -> infinity; it depends on t^2 only). Otherwise the range
+        // ends at t_a, where G2's dip appears at phi = pi; in xi that end is
+        // still mild enough for the (7, 15) rule (one panel meets the table
+        // tolerances on the whole default grid, where the (15, 31) rule used
+        // 31 nodes), and a panel that misses its tolerance is bisected.
         AdaptiveOptions xi_opt = outer_opt;
-        if (x_a > 0.0) xi_opt.rule = KronrodRule::k15;
+        xi_opt.rule = KronrodRule::k15;
         accumulate(integrate_adaptive<3>(
             [&](double xi) -> std::array<double, 3> {
                 const double t = alpha * std::sqrt(xi / (1.0 - xi));

@@ -18,7 +18,7 @@ constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(kGgxTab
 const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha) "
     "(across the clipped band from panels of at most 3 units of x; (7,15) in "
-    "xi = t^2/(alpha^2+t^2) below t = alpha when that is all full circle), "
+    "xi = t^2/(alpha^2+t^2) below t = min(alpha, t_a)), "
     "nested with phi clipped analytically to the upper hemisphere (trapezoidal on the "
     "full circle, Gauss-Kronrod (15,31) in tan(phi/2), or tan(phi/4) when phi reaches "
     "past 152 degrees, on clipped ranges); E_avg: adaptive "
