@@ -19,6 +19,8 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -103,23 +105,24 @@ Errors errors(const std::vector<double>& stored, const Table& ref) {
 int main(int argc, char** argv) {
     int rounds = 9;
     std::uint32_t samples = 1024;
-    Quality quality = Quality::standard;
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        auto next = [&]() -> const char* {
-            if (a + 1 >= argc) {
-                std::fprintf(stderr, "%s needs a value\n", arg.c_str());
-                std::exit(2);
-            }
-            return argv[++a];
-        };
-        if (arg == "--rounds") rounds = std::max(1, std::atoi(next()));
-        else if (arg == "--samples") samples = static_cast<std::uint32_t>(std::max(1, std::atoi(next())));
-        else if (arg == "--quality") quality = quality_from_string(next());
-        else {
-            std::fprintf(stderr, "usage: brdflut_dfg_race [--rounds R] [--samples N] [--quality Q]\n");
-            return 2;
-        }
+    std::string quality_name = "default";
+    CLI::App app{"ggx_dfg against the 1024-sample estimator engines ship, back to back on 1 and 2 threads",
+                 "brdflut_dfg_race"};
+    app.add_option("--rounds", rounds, "Rounds of the three programs (alternating their order)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    app.add_option("--samples", samples, "Samples per texel of the estimator")
+        ->capture_default_str()
+        ->check(CLI::Range(1u, 1u << 24));
+    app.add_option("--quality", quality_name, "Quadrature quality of ggx_dfg: draft, default or reference")
+        ->capture_default_str();
+    CLI11_PARSE(app, argc, argv);
+    Quality quality;
+    try {
+        quality = quality_from_string(quality_name);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
     }
 
     const TableDefinition& def = find_table("ggx_dfg");

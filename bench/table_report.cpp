@@ -26,6 +26,8 @@
 //    largest error of 1e-4 and their time are extrapolated from the M run.
 #include <sys/resource.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,7 +36,6 @@
 #include <ctime>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -117,42 +118,34 @@ double evaluations_per_texel(const Table& t) {
 int main(int argc, char** argv) {
     int threads = 0;
     long long mc_samples = 16384;
-    bool mc = true, with_reference = true;
-    Quality quality = Quality::standard;
-    std::set<std::string> only;
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        auto next = [&]() -> const char* {
-            if (a + 1 >= argc) {
-                std::fprintf(stderr, "%s needs a value\n", arg.c_str());
-                std::exit(2);
-            }
-            return argv[++a];
-        };
-        if (arg == "--threads") threads = std::max(0, std::atoi(next()));
-        else if (arg == "--quality") quality = quality_from_string(next());
-        else if (arg == "--no-reference") with_reference = false;
-        else if (arg == "--no-mc") mc = false;
-        else if (arg == "--mc-samples") mc_samples = std::max(1024LL, std::atoll(next()));
-        else if (arg == "--tables") {
-            std::stringstream list(next());
-            for (std::string id; std::getline(list, id, ',');) {
-                try {
-                    find_table(id);
-                } catch (const std::exception& e) {
-                    std::fprintf(stderr, "--tables: %s\n", e.what());
-                    return 2;
-                }
-                only.insert(id);
-            }
-            mc = false;
-        } else {
-            std::fprintf(stderr,
-                         "usage: brdflut_table_report [--threads N] [--quality Q] [--no-reference] "
-                         "[--no-mc] [--mc-samples M] [--tables ID,...]\n");
-            return 2;
-        }
+    bool no_mc = false, no_reference = false;
+    std::string quality_name = "default";
+    std::vector<std::string> tables;
+    CLI::App app{"Every table of the catalogue at default settings: time, evaluations per texel and errors "
+                 "against --quality reference",
+                 "brdflut_table_report"};
+    app.add_option("--threads", threads, "Worker threads; 0 uses every core")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1024));
+    app.add_option("--quality", quality_name, "Quality of the runs measured: draft, default or reference")
+        ->capture_default_str();
+    app.add_flag("--no-reference", no_reference, "Skip the reference runs (no errors)");
+    app.add_flag("--no-mc", no_mc, "Skip the Monte Carlo comparison of ggx_dfg");
+    app.add_option("--mc-samples", mc_samples, "Samples per texel of the Monte Carlo comparison")
+        ->capture_default_str()
+        ->check(CLI::Range(1024LL, 1LL << 40));
+    app.add_option("--tables", tables, "Only these tables (comma-separated ids); implies --no-mc")->delimiter(',');
+    CLI11_PARSE(app, argc, argv);
+    Quality quality;
+    try {
+        quality = quality_from_string(quality_name);
+        for (const std::string& id : tables) find_table(id);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
     }
+    const std::set<std::string> only(tables.begin(), tables.end());
+    bool mc = !no_mc && only.empty(), with_reference = !no_reference;
     if (mc) with_reference = true;  // the Monte Carlo errors need the reference
 
     std::printf("Every table at %s quality, %s threads (hardware: %u)\n",
