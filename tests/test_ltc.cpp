@@ -337,17 +337,8 @@ TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
         TableSettings s = default_settings(def);
         s.axes[0].count = 6;
         s.axes[1].count = 5;
-        GenerateOptions o1, o2, oall;
-        o1.threads = 1;
-        o2.threads = 2;
-        oall.threads = 0;
-        // Each run fits every texel itself (no fit shared from the last).
-        clear_shared_results();
-        const Table a = generate(def, s, o1);
-        clear_shared_results();
-        const Table b = generate(def, s, o2);
-        clear_shared_results();
-        const Table c = generate(def, s, oall);
+        const Table a = test::generate_fresh(def, s, 1), b = test::generate_fresh(def, s, 2),
+                    c = test::generate_fresh(def, s, 0);
         EXPECT_EQ(a.values, b.values) << id;
         EXPECT_EQ(a.values, c.values) << id;
         EXPECT_EQ(a.method.dump(), c.method.dump()) << id;

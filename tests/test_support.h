@@ -10,7 +10,9 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "brdflut/catalogue.h"
 #include "brdflut/exr.h"
+#include "brdflut/generate.h"
 #include "brdflut/table.h"
 
 namespace brdflut::test {
@@ -24,6 +26,18 @@ inline ExrImage image_of(const Table& t) {
     for (int c = 0; c < t.channel_count(); ++c) img.channel_names.push_back(std::string(1, "RGBA"[c]));
     for (double v : t.values) img.pixels.push_back(static_cast<float>(v));
     return img;
+}
+
+// The table generated on `threads` worker threads (0: all) with every
+// result shared between tables cleared first, so that the run computes
+// every texel itself (the thread-count tests compare such runs).
+inline Table generate_fresh(const TableDefinition& def, const TableSettings& s, int threads) {
+    clear_shared_results();
+    GenerateOptions o;
+    o.threads = threads;
+    Table t = generate(def, s, o);
+    clear_shared_results();
+    return t;
 }
 
 // A fresh folder under the system temporary directory, removed at scope exit.
