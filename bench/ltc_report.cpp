@@ -92,8 +92,9 @@ int main(int argc, char** argv) {
         const LtcInverse pub{t1[4 * k], t1[4 * k + 2], t1[4 * k + 1], t1[4 * k + 3]};
         const LtcLobe lobe(mu, alpha, Visibility::height_correlated);
         const double n0 = ltc_norms(lobe).n0;
-        const LtcTexelReport rh = ltc_texel_report(lobe, pub.matrix(), t2[4 * k]);
-        const LtcTexelReport rx = ltc_texel_report(lobe, pub.matrix(), n0);
+        const std::vector<LtcTexelReport> rep = ltc_texel_reports(lobe, {{pub.matrix(), t2[4 * k]}, {pub.matrix(), n0}});
+        const LtcTexelReport& rh = rep[0];
+        const LtcTexelReport& rx = rep[1];
         mine[k] = report.at(k, 2);  // the refit's report, as ltc_ggx_error stores it
         mine_l3[k] = report.at(k, 0);
         heitz[k] = rh.light_max;

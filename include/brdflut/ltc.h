@@ -183,6 +183,12 @@ LtcFit fit_ggx_ltc(double mu_o, double alpha, Visibility vis, const LtcFitOption
 // The fit's objective at given optimizer parameters (for tests: a fitted
 // texel is a local minimum of this).
 double ltc_objective(const LtcLobe& lobe, const std::array<double, 4>& params, const LtcFitOptions& opt = {});
+// The largest relative drop of the objective, (J(fit) - J(probe)) / J(fit),
+// over the probes that move one parameter of a fit by 1e-3 either way
+// (theta by 1e-3 of the lobe's width, exp(params[1]) capped at 1): at most
+// 0, up to rounding, at a local minimum. verify and the tests confirm fits
+// with it.
+double ltc_local_minimum_drop(const LtcLobe& lobe, const LtcFit& fit, const LtcFitOptions& opt = {});
 double ltc_objective(double mu_o, double alpha, Visibility vis, const std::array<double, 4>& params,
                      const LtcFitOptions& opt = {});
 // M^-1 (normalized) from the optimizer's parameters.
@@ -229,6 +235,14 @@ struct LtcTexelReport {
     double light_max = 0;
     double light_mean = 0;
 };
+// The reports of several LTCs of one lobe (a stored table's and a refit's):
+// the lobe's exact norm and light are computed once for all of them.
+struct LtcCandidate {
+    Mat3 minv;
+    double n0_stored = 0;
+};
+std::vector<LtcTexelReport> ltc_texel_reports(const LtcLobe& lobe, const std::vector<LtcCandidate>& candidates,
+                                              const LtcFitOptions& opt = {});
 LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored,
                                 const LtcFitOptions& opt = {});
 LtcTexelReport ltc_texel_report(double mu_o, double alpha, Visibility vis, const Mat3& minv,

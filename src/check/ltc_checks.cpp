@@ -119,16 +119,9 @@ void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
                         const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
                         const LtcFit fit = fit_ltc(lobe);
                         // The table holds this fit.
-                        double drop = std::abs(v.value[0] - fit.minv.a) + std::abs(v.value[3] - fit.minv.d);
-                        const double width = std::min(std::exp(fit.params[1]), 1.0);
-                        const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
-                        for (int k = 0; k < 4; ++k)
-                            for (double sgn : {-1.0, 1.0}) {
-                                std::array<double, 4> p = fit.params;
-                                p[static_cast<std::size_t>(k)] += sgn * steps[k];
-                                const double j = ltc_objective(lobe, p);
-                                drop = std::max(drop, (fit.objective - j) / fit.objective);
-                            }
+                        const double drop =
+                            std::max(std::abs(v.value[0] - fit.minv.a) + std::abs(v.value[3] - fit.minv.d),
+                                     ltc_local_minimum_drop(lobe, fit));
                         if (drop > r.first || r.second.empty()) {
                             std::ostringstream s;
                             s << "at " << (id == "ltc_eon" ? "sigma " : "roughness ") << rough << ", mu " << mu;

@@ -69,8 +69,9 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         const Mat3 minv = stored_ltc_inverse(*d.def, p);
         const LtcLobe lobe = ltc_table_lobe(id, r, mu, vis);  // as the table fits it
         const LtcFit fit = fit_ltc(lobe);
-        const LtcTexelReport stored = ltc_texel_report(lobe, minv, fit.n0);
-        const LtcTexelReport refit = ltc_texel_report(lobe, fit.minv.matrix(), fit.n0);
+        const std::vector<LtcTexelReport> rep = ltc_texel_reports(lobe, {{minv, fit.n0}, {fit.minv.matrix(), fit.n0}});
+        const LtcTexelReport& stored = rep[0];
+        const LtcTexelReport& refit = rep[1];
         out.stored_light[k] = stored.light_max;
         out.refit_light[k] = refit.light_max;
         below[k] = stored.below_horizon;

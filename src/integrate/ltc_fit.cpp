@@ -48,6 +48,7 @@
 //     vertex with smaller simplices until a restart no longer improves J.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "brdflut/ggx_integrals.h"
@@ -714,6 +715,22 @@ double ltc_objective(const LtcLobe& lobe, const std::array<double, 4>& params, c
     return objective(s.grid, ltc_inverse_from_params(params).matrix());
 }
 
+double ltc_local_minimum_drop(const LtcLobe& lobe, const LtcFit& fit, const LtcFitOptions& opt) {
+    const Setup s = make_setup(lobe, ltc_norms(lobe).n0, opt.radial_nodes, opt.azimuth_nodes);
+    const double j0 = objective(s.grid, ltc_inverse_from_params(fit.params).matrix());
+    // Steps relative to each parameter's scale: theta in units of the lobe's width.
+    const double width = std::min(std::exp(fit.params[1]), 1.0);
+    const double steps[4] = {1e-3 * width, 1e-3, 1e-3, 1e-3};
+    double drop = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < 4; ++k)
+        for (double sgn : {-1.0, 1.0}) {
+            std::array<double, 4> p = fit.params;
+            p[k] += sgn * steps[k];
+            drop = std::max(drop, (j0 - objective(s.grid, ltc_inverse_from_params(p).matrix())) / j0);
+        }
+    return drop;
+}
+
 double ltc_objective(double mu, double alpha, Visibility vis, const std::array<double, 4>& params,
                      const LtcFitOptions& opt) {
     return ltc_objective(LtcLobe(mu, alpha, vis), params, opt);
@@ -924,18 +941,33 @@ LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vec
     return e;
 }
 
-LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored, const LtcFitOptions& opt) {
+std::vector<LtcTexelReport> ltc_texel_reports(const LtcLobe& lobe, const std::vector<LtcCandidate>& candidates,
+                                              const LtcFitOptions& opt) {
+    // The lobe's side, computed once for every candidate: its exact norm,
+    // the fine grid of the L3 error (whose frame the exact light uses too)
+    // and the exact light of the bank.
     const double n0 = ltc_norms(lobe).n0;
-    LtcTexelReport r;
-    const LtcLobeError le = ltc_lobe_error(lobe, minv, n0);
-    r.relative_l3 = le.relative_l3;
-    r.below_horizon = le.below_horizon;
+    const LtcFitOptions fine = ltc_fit_options(2);
+    const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
     const std::vector<LtcLight> bank = ltc_light_bank(lobe.mu_o);
-    const std::vector<double> exact = ltc_exact_light(lobe, bank, opt.light_tolerance * n0);
-    const LtcLightError l = ltc_light_error(minv, n0_stored, bank, exact, n0);
-    r.light_max = l.max;
-    r.light_mean = l.mean;
-    return r;
+    std::vector<double> exact;
+    for (const LtcLight& l : bank) exact.push_back(polygon_light(lobe, s.frame, l, opt.light_tolerance * n0));
+    std::vector<LtcTexelReport> out;
+    for (const LtcCandidate& c : candidates) {
+        LtcTexelReport r;
+        const LtcInverse inv = LtcInverse::from_matrix(c.minv);
+        r.relative_l3 = relative_l3(s.grid, inv.matrix());
+        r.below_horizon = below_horizon_of(inv);
+        const LtcLightError l = ltc_light_error(c.minv, c.n0_stored, bank, exact, n0);
+        r.light_max = l.max;
+        r.light_mean = l.mean;
+        out.push_back(r);
+    }
+    return out;
+}
+
+LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored, const LtcFitOptions& opt) {
+    return ltc_texel_reports(lobe, {{minv, n0_stored}}, opt).front();
 }
 
 LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const Mat3& minv, double n0_stored,
