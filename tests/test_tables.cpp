@@ -14,6 +14,7 @@
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
+#include "tables/shared_results.h"
 #include "test_support.h"
 
 using namespace brdflut;
@@ -306,4 +307,30 @@ TEST(Exr, DeepDataIsRefusedByName) {
     const std::string deep = brdflut::test::read_file(dir / "deep.exr");
     EXPECT_NE(read_error(deep).find("part 0 holds deep data, which no table uses"), std::string::npos)
         << read_error(deep);
+}
+
+TEST(SharedResults, CachesAtMostItsBoundAndClearSharedResultsEmptiesIt) {
+    tables::SharedResults<1, std::uint64_t> cache(128);  // two values per shard
+    int calls = 0;
+    auto get = [&](std::uint64_t k, bool* computed) {
+        return cache.get({k}, [&] { ++calls; return 3 * k; }, computed);
+    };
+    bool computed = false;
+    for (std::uint64_t k = 0; k < 1000; ++k) {
+        EXPECT_EQ(get(k, &computed), 3 * k);
+        EXPECT_TRUE(computed) << k;
+    }
+    int hits = 0;
+    for (std::uint64_t k = 0; k < 1000; ++k) {
+        EXPECT_EQ(get(k, &computed), 3 * k);  // a hit returns what was computed
+        hits += computed ? 0 : 1;
+    }
+    EXPECT_GT(hits, 0);
+    EXPECT_LE(hits, 128);
+    EXPECT_EQ(calls, 2000 - hits);
+    clear_shared_results();
+    for (std::uint64_t k = 0; k < 1000; ++k) {
+        get(k, &computed);
+        EXPECT_TRUE(computed) << k;
+    }
 }

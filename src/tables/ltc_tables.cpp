@@ -321,6 +321,8 @@ const std::vector<std::string> kReportChannels = {
     "mean integrated-light error over the light bank, as a fraction of n0"};
 
 const char* kHeitzShader = "shader mat3(vec3(R, 0, G), vec3(0, 1, 0), vec3(B, 0, A))";
+const std::vector<std::string> kHeitzMatrixChannels = {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])",
+                                                        "m02 (column 0, row 2)", "m20 (column 2, row 0)", "m22"};
 
 const std::vector<Entry>& entries() {
     static const std::vector<Entry> all = [] {
@@ -328,8 +330,7 @@ const std::vector<Entry>& entries() {
         v.push_back({LtcLobeKind::ggx, Layout::heitz_matrix, "ltc_1", "ltc",
                      "Heitz LTC ltc_1: the inverse matrix of the GGX fit divided by its middle element",
                      std::string("Heitz ltc_1 (three.js LTC_MAT_1, EEVEE, Godot): ") + kHeitzShader,
-                     {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])", "m02 (column 0, row 2)",
-                      "m20 (column 2, row 0)", "m22"}});
+                     kHeitzMatrixChannels});
         v.push_back({LtcLobeKind::ggx, Layout::heitz_norms, "ltc_2", "ltc",
                      "Heitz LTC ltc_2: norm, Fresnel moment and the horizon-clipped sphere form factor",
                      "Heitz ltc_2 (three.js LTC_MAT_2): specular = n0 F0 + n1 (1 - F0) times the LTC "
@@ -345,8 +346,7 @@ const std::vector<Entry>& entries() {
                      "LTC of the Charlie sheen lobe in ltc_1's layout: the inverse matrix divided by its middle "
                      "element",
                      std::string("ltc_1's layout (columns roughness, alpha = max(r^2, 0.01)): ") + kHeitzShader,
-                     {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])", "m02 (column 0, row 2)",
-                      "m20 (column 2, row 0)", "m22"}});
+                     kHeitzMatrixChannels});
         v.push_back({LtcLobeKind::charlie_sheen, Layout::norm, "ltc_sheen_charlie_norm", "ltc",
                      "Norm n0 of the Charlie sheen lobe on the grid of ltc_sheen_charlie",
                      "ltc_sheen_charlie's grid: sheen = n0 times the LTC integral",
@@ -358,8 +358,7 @@ const std::vector<Entry>& entries() {
                      "LTC of the EON rough diffuse lobe in ltc_1's layout: the inverse matrix divided by its "
                      "middle element",
                      std::string("ltc_1's layout (columns sigma): ") + kHeitzShader,
-                     {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])", "m02 (column 0, row 2)",
-                      "m20 (column 2, row 0)", "m22"}});
+                     kHeitzMatrixChannels});
         v.push_back({LtcLobeKind::eon, Layout::norm, "ltc_eon_norm", "ltc",
                      "Norm n0 of the EON lobe on the grid of ltc_eon (1 up to the quadrature: EON conserves energy)",
                      "ltc_eon's grid: diffuse = rho n0 times the LTC integral",
