@@ -57,8 +57,23 @@ Estimate<2> ggx_glass(double mu_o, double alpha, double eta, Visibility vis,
 // on the domain where wo and the reflected (refracted) direction are on the
 // right sides. F depends on c alone, so the Fresnel factor leaves the psi
 // integral, and every domain of psi is an interval in closed form.
+// The two channels are separate integrals. From inside (eta < 1) E_T avg
+// is taken from outside by the reciprocity of Walter's model,
+//   E_T avg(alpha, 1/n) = E_T avg(alpha, n) / n^2,
+// so only the outside transmission is ever integrated (the tests hold it
+// against the inside computed by ggx_glass_average_over_mu).
 Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis,
                               double abs_tol = kGlassAbsTolerance);
+// Its parts, for callers that share them between tables (the outside
+// transmission of index n serves both sides): E_R avg at eta; E_T avg from
+// outside at n >= 1 (eta = n); and the pair {E_R avg, E_T avg} at eta from
+// the two (E_T scaled by eta^2 when eta < 1, n = 1 / eta).
+Estimate<1> ggx_glass_average_reflection(double alpha, double eta, Visibility vis,
+                                         double abs_tol = kGlassAbsTolerance);
+Estimate<1> ggx_glass_average_transmission_outside(double alpha, double n, Visibility vis,
+                                                   double abs_tol = kGlassAbsTolerance);
+Estimate<2> ggx_glass_average_of_parts(const Estimate<1>& reflection, const Estimate<1>& transmission_outside,
+                                       double eta);
 // The same averages by a second route: adaptive quadrature in mu of
 // ggx_glass(mu) (much slower; the tests hold the two against each other).
 Estimate<2> ggx_glass_average_over_mu(double alpha, double eta, Visibility vis,

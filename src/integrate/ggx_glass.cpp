@@ -387,6 +387,15 @@ namespace {
 //   mu_i = c cos(theta_h) - s_c sin(theta_h) cos(psi)          (reflection)
 //   |mu_t| = cos_t cos(theta_h) + sin_t sin(theta_h) cos(psi)   (refraction, sin_t = s_c / eta)
 // all linear in cos(psi), so each domain is an interval of psi in closed form.
+// Reflection and transmission are separate integrals, each over its own
+// domain with its own adaptive refinement:
+//   reflection     psi in (psi_r, pi - psi_r), psi_r = acos(min(1, mu-ratio)); the
+//                  integrand is even about pi/2 (psi -> pi - psi swaps wo and wi,
+//                  and G2 is symmetric), so it is twice the integral to pi/2.
+//   transmission   only from outside (eta >= 1), where cos_t >= c and sin_t <= s_c
+//                  make the refracted ray reach below the horizon wherever wo is
+//                  above it: psi in [0, psi_o], one smooth piece. From inside the
+//                  average is taken from outside by reciprocity (ggx_glass_average).
 struct AverageIntegrand {
     Ggx ggx;
     Visibility vis;
@@ -397,117 +406,92 @@ struct AverageIntegrand {
         : ggx{alpha}, vis(v), eta(e), c_crit(e < 1.0 ? std::sqrt((1.0 - e) * (1.0 + e)) : 0.0) {}
 };
 
-// Integral over psi in [0, pi] at fixed (theta_h, c) of {G2 on the
-// reflection domain, G2 on the refraction domain, error estimate}.
-std::array<double, 3> psi_integral(const AverageIntegrand& f, double cos_h, double sin_h, double c, double cos_t,
-                                   bool refracts, double tol, long long* evals) {
+// Integral of G2 over the psi domain of the chosen channel at fixed
+// (theta_h, c): {value, error estimate}.
+enum class Channel { reflection, transmission };
+
+std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double cos_h, double sin_h, double c,
+                                   double cos_t, double tol, long long* evals) {
     const double s_c = std::sqrt((1.0 - c) * (1.0 + c));
     const double a = c * cos_h, b = s_c * sin_h;
-    const double sin_t = s_c / f.eta;
-    const double at = cos_t * cos_h, bt = sin_t * sin_h;
-    // mu_o > 0 for psi < psi_o = acos(-a / b); reflection for psi in
-    // (psi_r, psi_o), psi_r = acos(a / b); refraction for psi < psi_t =
-    // acos(-at / bt) as well (from outside always, so psi_t = psi_o).
     const double r = b > 0.0 ? a / b : HUGE_VAL;
-    const double psi_o = r < 1.0 ? kPi - acos_clamped(r) : kPi;
-    const double psi_r = r < 1.0 ? acos_clamped(r) : 0.0;
-    double psi_t = psi_o;
-    if (refracts && bt > 0.0 && at / bt < r) psi_t = std::min(psi_o, acos_clamped(-at / bt));
-    std::array<double, 4> ps{0.0, psi_r, refracts ? psi_t : psi_r, psi_o};
-    std::sort(ps.begin(), ps.end());
-    const int n = static_cast<int>(std::unique(ps.begin(), ps.end()) - ps.begin());
-    if (n < 2) return {0.0, 0.0, 0.0};
+    const bool reflect = ch == Channel::reflection;
+    // reflection: (psi_r, pi/2], doubled; transmission: [0, psi_o].
+    const double p0 = reflect && r < 1.0 ? acos_clamped(r) : 0.0;
+    const double p1 = reflect ? 0.5 * kPi : r < 1.0 ? kPi - acos_clamped(r) : kPi;
+    const double len = p1 - p0;
+    if (!(len > 0.0)) return {0.0, 0.0};
+    const double at = cos_t * cos_h, bt = s_c / f.eta * sin_h;
     AdaptiveOptions opt;
-    opt.abs_tol = tol / (n - 1);
-    opt.controlled = 2;
+    opt.abs_tol = reflect ? 0.5 * tol : tol;
+    opt.controlled = 1;
     opt.max_intervals = 200;
     opt.rule = KronrodRule::k15;
-    std::array<double, 3> out{};
-    for (int j = 1; j < n; ++j) {
-        const double p0 = ps[static_cast<std::size_t>(j) - 1], len = ps[static_cast<std::size_t>(j)] - p0;
-        if (!(len > 0.0)) continue;
-        const Estimate<2> e = integrate_adaptive<2>(
-            [&](double u) {
-                // Analytic up to both ends (even at 0 and pi; G2 analytic in
-                // mu down to mu = 0 where a domain ends): no change of variable.
-                const double cp = std::cos(p0 + len * u);
-                const double jac = len;
-                const double mu_o = a + b * cp;
-                std::array<double, 2> y{0.0, 0.0};
-                if (!(mu_o > 0.0) || !(jac > 0.0)) return y;
-                const double mu_i = a - b * cp;
-                if (mu_i > 0.0) y[0] = f.ggx.G2(mu_o, mu_i, f.vis) * jac;
-                if (refracts) {
-                    const double mu_t = at + bt * cp;
-                    if (mu_t > 0.0) y[1] = f.ggx.G2(mu_o, mu_t, f.vis) * jac;
-                }
-                return y;
-            },
-            0.0, 1.0, opt);
-        out[0] += e.value[0];
-        out[1] += e.value[1];
-        out[2] += e.error[0] + e.error[1];
-        *evals += e.evaluations;
-    }
-    return out;
+    const Estimate<1> e = integrate_adaptive<1>(
+        [&](double u) -> std::array<double, 1> {
+            // Analytic up to both ends (G2 is analytic in mu down to mu = 0
+            // where a domain ends): no change of variable.
+            const double cp = std::cos(p0 + len * u);
+            const double mu_o = a + b * cp;
+            if (!(mu_o > 0.0)) return {0.0};
+            const double mu_x = reflect ? a - b * cp : at + bt * cp;
+            return {mu_x > 0.0 ? f.ggx.G2(mu_o, mu_x, f.vis) * len : 0.0};
+        },
+        0.0, 1.0, opt);
+    *evals += e.evaluations;
+    const double k = reflect ? 2.0 : 1.0;
+    return {k * e.value[0], k * e.error[0]};
 }
 
-// Integral over c in [0, 1] at fixed theta_h of c {F K_R, (1 - F) K_T}
-// (K the psi integrals over [0, pi]) and its error estimate.
-std::array<double, 3> c_integral(const AverageIntegrand& f, double cos_h, double sin_h, double tol,
+// Integral over c in [0, 1] at fixed theta_h of c F K_R (reflection) or
+// c (1 - F) K_T (transmission), K the psi integrals over [0, pi]:
+// {value, 0, error estimate} (the layout integrate_over_x takes).
+std::array<double, 3> c_integral(const AverageIntegrand& f, Channel ch, double cos_h, double sin_h, double tol,
                                  long long* evals) {
-    // Break points: sin(theta_h), where the reflection domain (and from
-    // outside the refraction one) stops being the whole circle; the critical
-    // c; and from inside sqrt(1 - eta^2 cos^2(theta_h)), where the refracted
-    // ray at psi = pi reaches the horizon.
-    std::array<double, 5> cs{};
+    // Break points: sin(theta_h), where the domain of psi stops being the
+    // whole circle, and the critical c (reflection from inside).
+    std::array<double, 4> cs{};
     int n = 0;
     cs[n++] = 0.0;
     cs[n++] = 1.0;
     if (sin_h > 0.0 && sin_h < 1.0) cs[n++] = sin_h;
-    if (f.c_crit > 0.0) {
-        cs[n++] = f.c_crit;
-        const double q = f.eta * cos_h;
-        cs[n++] = std::sqrt((1.0 - q) * (1.0 + q));
-    }
+    if (f.c_crit > 0.0) cs[n++] = f.c_crit;
     std::sort(cs.begin(), cs.begin() + n);
     n = static_cast<int>(std::unique(cs.begin(), cs.begin() + n) - cs.begin());
     AdaptiveOptions opt;
     opt.abs_tol = 0.5 * tol / (n - 1);
-    opt.controlled = 2;
+    opt.controlled = 1;
     opt.max_intervals = 200;
     opt.rule = KronrodRule::k31;
     const double inner_budget = 0.5 * tol / (n - 1);
+    const std::size_t slot = ch == Channel::reflection ? 0 : 1;
     std::array<double, 3> out{};
     for (int j = 1; j < n; ++j) {
         const double c0 = cs[static_cast<std::size_t>(j) - 1], len = cs[static_cast<std::size_t>(j)] - c0;
         if (!(len > 0.0)) continue;
         long long inner = 0;
-        const Estimate<3> e = integrate_adaptive<3>(
-            [&](double u) -> std::array<double, 3> {
+        const Estimate<2> e = integrate_adaptive<2>(
+            [&](double u) -> std::array<double, 2> {
                 const double c = c0 + len * smoothstep(u);
                 const double w = c * len * smoothstep_slope(u);
-                if (!(w > 0.0)) return {0.0, 0.0, 0.0};
+                if (!(w > 0.0)) return {0.0, 0.0};
                 const std::array<double, 3> fr = fresnel_split(c, f.eta);
-                const bool refracts = fr[1] > 0.0;
-                const std::array<double, 3> k = psi_integral(f, cos_h, sin_h, c, fr[2], refracts,
-                                                             std::min(kMaxInnerRel * kPi, inner_budget / w), &inner);
-                return {w * fr[0] * k[0], w * fr[1] * k[1], w * k[2]};
+                const double weight = w * fr[slot];
+                if (!(weight > 0.0)) return {0.0, 0.0};
+                const std::array<double, 2> k = psi_integral(f, ch, cos_h, sin_h, c, fr[2],
+                                                             std::min(kMaxInnerRel * kPi, inner_budget / weight), &inner);
+                return {weight * k[0], weight * k[1]};
             },
             0.0, 1.0, opt);
-        out[0] += e.value[0];
-        out[1] += e.value[1];
-        out[2] += e.error[0] + e.error[1] + e.value[2];
+        out[slot] += e.value[0];
+        out[2] += e.error[0] + e.value[1];
         *evals += e.evaluations + inner;
     }
     return out;
 }
 
-}  // namespace
-
-Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
-    if (!(eta > 0.0)) return {};
-    if (!(alpha > 0.0)) return ggx_glass_average_over_mu(alpha, eta, vis, abs_tol);
+// One channel of the average over x, c and psi.
+Estimate<1> glass_average_channel(double alpha, double eta, Visibility vis, Channel ch, double abs_tol) {
     const AverageIntegrand f(alpha, vis, eta);
     // x = ln(tan(theta_h) / alpha) as in ggx_glass, split inside where
     // sin(theta_h) reaches the critical c.
@@ -516,15 +500,62 @@ Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double a
     // The measure D(h) dw_h with the azimuth of h integrated out is
     // (1/2) sech^2(x) dx / cos(theta_h); with 1/pi and the two halves of
     // psi: sech^2(x) / (pi cos(theta_h)) dx.
-    return integrate_over_x(xs, alpha, 1.0, abs_tol,
-                            [&](double t, double w, double inner_budget, long long* evals) {
-                                const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
-                                w /= cos_h;
-                                const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
-                                std::array<double, 3> r = c_integral(f, cos_h, sin_h, tol, evals);
-                                for (double& v : r) v *= w;
-                                return r;
-                            });
+    const Estimate<2> e = integrate_over_x(xs, alpha, 1.0, abs_tol,
+                                           [&](double t, double w, double inner_budget, long long* evals) {
+                                               const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
+                                               w /= cos_h;
+                                               const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
+                                               std::array<double, 3> r = c_integral(f, ch, cos_h, sin_h, tol, evals);
+                                               for (double& v : r) v *= w;
+                                               return r;
+                                           });
+    const std::size_t slot = ch == Channel::reflection ? 0 : 1;
+    Estimate<1> out;
+    out.value[0] = e.value[slot];
+    out.error[0] = e.error[slot];
+    out.evaluations = e.evaluations;
+    return out;
+}
+
+}  // namespace
+
+Estimate<1> ggx_glass_average_reflection(double alpha, double eta, Visibility vis, double abs_tol) {
+    if (!(eta > 0.0)) return {};
+    if (!(alpha > 0.0)) {
+        const Estimate<2> s = ggx_glass_average_over_mu(alpha, eta, vis, abs_tol);
+        return {{s.value[0]}, {s.error[0]}, s.evaluations};
+    }
+    if (eta == 1.0) return {};  // no Fresnel reflection
+    return glass_average_channel(alpha, eta, vis, Channel::reflection, abs_tol);
+}
+
+Estimate<1> ggx_glass_average_transmission_outside(double alpha, double n, Visibility vis, double abs_tol) {
+    if (!(n >= 1.0)) return {};
+    if (!(alpha > 0.0)) {
+        const Estimate<2> s = ggx_glass_average_over_mu(alpha, n, vis, abs_tol);
+        return {{s.value[1]}, {s.error[1]}, s.evaluations};
+    }
+    return glass_average_channel(alpha, n, vis, Channel::transmission, abs_tol);
+}
+
+Estimate<2> ggx_glass_average_of_parts(const Estimate<1>& reflection, const Estimate<1>& transmission_outside,
+                                       double eta) {
+    Estimate<2> out;
+    // Reciprocity of Walter's model: T_avg(1/n) inside = T_avg(n) outside / n^2.
+    const double s = eta < 1.0 ? eta * eta : 1.0;
+    out.value = {reflection.value[0], s * transmission_outside.value[0]};
+    out.error = {reflection.error[0], s * transmission_outside.error[0]};
+    out.evaluations = reflection.evaluations + transmission_outside.evaluations;
+    return out;
+}
+
+Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double abs_tol) {
+    if (!(eta > 0.0)) return {};
+    if (!(alpha > 0.0)) return ggx_glass_average_over_mu(alpha, eta, vis, abs_tol);
+    return ggx_glass_average_of_parts(ggx_glass_average_reflection(alpha, eta, vis, abs_tol),
+                                      ggx_glass_average_transmission_outside(alpha, eta < 1.0 ? 1.0 / eta : eta, vis,
+                                                                             abs_tol),
+                                      eta);
 }
 
 }  // namespace brdflut

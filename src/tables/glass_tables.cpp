@@ -7,6 +7,7 @@
 
 #include "brdflut/glass_integrals.h"
 #include "brdflut/random.h"
+#include "tables/shared_results.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -22,10 +23,12 @@ const char* kQuadratureRule =
     "most 8 units of x, the "
     "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
     "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (7,15) under "
-    "that map on each piece; E_avg: the same x, then c = wo.h by adaptive Gauss-Kronrod (15,31) "
-    "split at sin(theta_h), the critical c and, inside, sqrt(1 - eta^2 cos^2(theta_h)), then the "
-    "azimuth of wo about h by adaptive Gauss-Kronrod (7,15) over its closed-form domains; error per "
-    "value: QUADPACK estimate plus the integrated inner estimates";
+    "that map on each piece; E_avg: E_R and E_T apart, each over the same x, then c = wo.h by "
+    "adaptive Gauss-Kronrod (15,31) split at sin(theta_h) and (E_R inside) the critical c, then the "
+    "azimuth of wo about h by adaptive Gauss-Kronrod (7,15) over its closed-form domain (E_R over "
+    "half of it, the integrand even about pi/2); E_T avg inside by reciprocity from outside, "
+    "E_T(1/n) = E_T(n) / n^2; error per value: QUADPACK estimate plus the integrated inner "
+    "estimates";
 const char* kMcSampler =
     "mixture of GGX visible normals (Heitz 2018; 0.7), normals logistic in ln(tan(theta_h)/alpha) with "
     "scale 2 (0.2) and normals with wo.h = u^4 (0.1), both channels from each normal, weighed by the "
@@ -65,6 +68,18 @@ AxisSpec ior_axis(int count) {
             "use eta = n, inside tables eta = 1/n"};
 }
 
+Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol) {
+    const double eta = inside ? 1.0 / n : n;
+    if (!(alpha > 0.0) || !(n >= 1.0)) return ggx_glass_average(alpha, eta, vis, abs_tol);
+    static SharedResults<4, Estimate<1>> transmission(1 << 14);
+    bool computed = true;
+    Estimate<1> t = transmission.get({key_bits(alpha), key_bits(n), key_bits(abs_tol), key_enum(vis)},
+                                     [&] { return ggx_glass_average_transmission_outside(alpha, n, vis, abs_tol); },
+                                     &computed);
+    if (!computed) t.evaluations = 0;
+    return ggx_glass_average_of_parts(ggx_glass_average_reflection(alpha, eta, vis, abs_tol), t, eta);
+}
+
 }  // namespace tables
 
 namespace {
@@ -85,7 +100,7 @@ public:
         Estimate<2> e;
         if (avg)
             e = mc_ ? ggx_glass_average_mc(alpha, eta, vis_, samples_, seed)
-                    : ggx_glass_average(alpha, eta, vis_, abs_tol_);
+                    : tables::glass_average(alpha, n, inside_, vis_, abs_tol_);
         else
             e = mc_ ? ggx_glass_mc(mu, alpha, eta, vis_, samples_, seed) : ggx_glass(mu, alpha, eta, vis_, abs_tol_);
         const double scale = mc_ ? tables::kMcErrorSigmas : 1.0;

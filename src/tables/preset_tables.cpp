@@ -101,10 +101,11 @@ public:
             }
             case Kind::cycles_glass_e_avg:
             case Kind::cycles_glass_inv_e_avg: {
-                const double eta = kind_ == Kind::cycles_glass_e_avg ? c[1] : 1.0 / c[1];
+                const bool inside = kind_ == Kind::cycles_glass_inv_e_avg;
+                const double eta = inside ? 1.0 / c[1] : c[1];
                 Estimate<2> e = mc_ ? ggx_glass_average_mc(c[0], eta, Visibility::height_correlated, samples_, seed)
-                                    : ggx_glass_average(c[0], eta, Visibility::height_correlated,
-                                                        tables::kGlassTolerances.at(quality_));
+                                    : tables::glass_average(c[0], c[1], inside, Visibility::height_correlated,
+                                                            tables::kGlassTolerances.at(quality_));
                 out.value[0] = e.value[0] + e.value[1];
                 out.error[0] = scale() * (e.error[0] + e.error[1]);
                 out.evaluations = e.evaluations;

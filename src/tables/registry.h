@@ -5,6 +5,7 @@
 
 #include "brdflut/catalogue.h"
 #include "brdflut/microfacet.h"
+#include "brdflut/quadrature.h"
 
 namespace brdflut {
 
@@ -54,6 +55,12 @@ nlohmann::json monte_carlo_method(const std::string& sampler, const TableSetting
 AxisSpec ior_axis(int count = 16);
 ModelOption glass_visibility_option();
 nlohmann::json glass_model(Visibility vis, bool inside);
+// {E_R avg, E_T avg} of index n >= 1 seen from outside (eta = n) or inside
+// (eta = 1/n), for the glass tables and the presets: the outside
+// transmission of each (alpha, n, visibility, tolerance), which gives both
+// sides (ggx_glass_average_of_parts), is integrated once per process and
+// shared (its evaluations are counted where it is computed).
+Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol);
 
 // Model metadata of the Charlie sheen lobe (sheen_tables.cpp).
 nlohmann::json charlie_sheen_model();
