@@ -20,7 +20,7 @@
 //   Fresnel         F has a square-root kink at the critical c = sqrt(k).
 // So the phi integral at fixed t is split at the azimuths of those
 // thresholds (acos of (c - a0) / a1) into pieces on which both channels are
-// smooth, each done by adaptive Gauss-Kronrod (7, 15) in u with
+// smooth, each done by adaptive Gauss-Kronrod (15, 31) in u with
 // phi = p0 + (p1 - p0)(3u^2 - 2u^3), which turns a square-root end into an
 // analytic one. The outer integral in x is split where a threshold meets
 // the ends of the ring (phi = 0 or pi), found in closed form:
@@ -177,6 +177,7 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     opt.abs_tol = tol / (n - 1);
     opt.controlled = 2;
     opt.max_intervals = 400;
+    opt.rule = KronrodRule::k31;
     double p0 = acos_clamped(cs[0]);
     for (int j = 1; j < n; ++j) {
         const double p1 = acos_clamped(cs[j]);

@@ -22,7 +22,7 @@ const char* kQuadratureRule =
     "angle, wo.h = 0) meets phi = 0 or pi or another threshold, and at x = +-1, from panels of at "
     "most 8 units of x, the "
     "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
-    "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (7,15) under "
+    "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (15,31) under "
     "that map on each piece; E_avg: E_R and E_T apart, each over the same x, then c = wo.h by "
     "adaptive Gauss-Kronrod (15,31) split at sin(theta_h) and (E_R inside) the critical c, then the "
     "azimuth of wo about h by adaptive Gauss-Kronrod (7,15) over its closed-form domain (E_R over "
