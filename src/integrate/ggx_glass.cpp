@@ -107,10 +107,24 @@ struct GlassIntegrand {
     // found up to 2.7 times low there). Wider, the rules resolve it.
     double c_knee;
 
+    // wo's part of G2, the same for the whole texel: Lambda(mu_o) (height
+    // correlated) or G1(mu_o) (separable, Schlick-Smith).
+    double lambda_o, g1_o;
+
     GlassIntegrand(double alpha, Visibility v, double mu, double e)
         : ggx{alpha}, vis(v), mu_o(mu), sin_o(safe_sqrt(1.0 - mu * mu)), eta(e), k(1.0 - e * e),
           c_crit(e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0),
-          c_knee(e > 1.0 && (e - 1.0) * (e + 1.0) < 0.01 ? std::sqrt((e - 1.0) * (e + 1.0)) : 0.0) {}
+          c_knee(e > 1.0 && (e - 1.0) * (e + 1.0) < 0.01 ? std::sqrt((e - 1.0) * (e + 1.0)) : 0.0),
+          lambda_o(ggx.lambda(mu)), g1_o(v == Visibility::schlick_smith ? ggx.G1_schlick(mu) : ggx.G1(mu)) {}
+
+    // ggx.G2(mu_o, mu_x, vis), bit for bit, with wo's part computed once
+    // (mu_o > 0: it is clamped to kGlassGrazingMu).
+    double G2(double mu_x) const {
+        if (mu_x <= 0.0) return 0.0;
+        if (vis == Visibility::separable) return g1_o * ggx.G1(mu_x);
+        if (vis == Visibility::schlick_smith) return g1_o * ggx.G1_schlick(mu_x);
+        return 1.0 / (1.0 + lambda_o + ggx.lambda(mu_x));
+    }
 
     Ring ring(double t) const {
         const double cos_h = 1.0 / std::sqrt(1.0 + t * t);
@@ -125,10 +139,10 @@ struct GlassIntegrand {
         const auto [F, T, cos_t] = fresnel_split(c, eta);
         const double w = c * q.scale;
         const double mu_r = 2.0 * c * q.cos_h - mu_o;
-        if (mu_r > 0.0) y[0] = F * ggx.G2(mu_o, mu_r, vis) * w;
+        if (mu_r > 0.0) y[0] = F * G2(mu_r) * w;
         if (T > 0.0) {
             const double mu_t = -mu_o / eta + (c / eta - cos_t) * q.cos_h;
-            if (mu_t < 0.0) y[1] = T * ggx.G2(mu_o, -mu_t, vis) * w;
+            if (mu_t < 0.0) y[1] = T * G2(-mu_t) * w;
         }
         return y;
     }
@@ -428,15 +442,22 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     opt.controlled = 1;
     opt.max_intervals = 200;
     opt.rule = KronrodRule::k15;
+    // In w = tan(psi / 4), where cos(psi) = 2 ((1 - w^2) / (1 + w^2))^2 - 1
+    // and dpsi = 4 dw / (1 + w^2) are rational: no cosine per node (the
+    // cosine was 45 % of the averages' time). The map is analytic on [0, pi],
+    // and the integrand analytic up to both ends (G2 is analytic in mu down
+    // to mu = 0 where a domain ends).
+    const double w0 = std::tan(0.25 * p0), wl = std::tan(0.25 * p1) - w0;
     const Estimate<1> e = integrate_adaptive<1>(
         [&](double u) -> std::array<double, 1> {
-            // Analytic up to both ends (G2 is analytic in mu down to mu = 0
-            // where a domain ends): no change of variable.
-            const double cp = std::cos(p0 + len * u);
+            const double w = w0 + wl * u;
+            const double q = 1.0 / (1.0 + w * w);
+            const double half = (1.0 - w * w) * q;
+            const double cp = 2.0 * half * half - 1.0;
             const double mu_o = a + b * cp;
             if (!(mu_o > 0.0)) return {0.0};
             const double mu_x = reflect ? a - b * cp : at + bt * cp;
-            return {mu_x > 0.0 ? f.ggx.G2(mu_o, mu_x, f.vis) * len : 0.0};
+            return {mu_x > 0.0 ? f.ggx.G2(mu_o, mu_x, f.vis) * 4.0 * q * wl : 0.0};
         },
         0.0, 1.0, opt);
     *evals += e.evaluations;
@@ -444,21 +465,14 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     return {k * e.value[0], k * e.error[0]};
 }
 
-// Integral over c in [0, 1] at fixed theta_h of c F K_R (reflection) or
-// c (1 - F) K_T (transmission), K the psi integrals over [0, pi]:
-// {value, 0, error estimate} (the layout integrate_over_x takes).
-std::array<double, 3> c_integral(const AverageIntegrand& f, Channel ch, double cos_h, double sin_h, double tol,
-                                 long long* evals) {
-    // Break points: sin(theta_h), where the domain of psi stops being the
-    // whole circle, and the critical c (reflection from inside).
-    std::array<double, 4> cs{};
-    int n = 0;
-    cs[n++] = 0.0;
-    cs[n++] = 1.0;
-    if (sin_h > 0.0 && sin_h < 1.0) cs[n++] = sin_h;
-    if (f.c_crit > 0.0) cs[n++] = f.c_crit;
-    std::sort(cs.begin(), cs.begin() + n);
-    n = static_cast<int>(std::unique(cs.begin(), cs.begin() + n) - cs.begin());
+// Integral over c = wo.h of c {F, 1 - F}(c) inner(c), on the pieces
+// between the n break points cs (ascending, from 0 to 1), each under the
+// map 3u^2 - 2u^3: {value, error estimate}. inner(c, cos_t, tol, &evals)
+// returns {value, error estimate} to about tol, and tol is capped at
+// inner_cap.
+template <class Inner>
+std::array<double, 2> integrate_over_c(const AverageIntegrand& f, Channel ch, const std::array<double, 4>& cs, int n,
+                                       double tol, double inner_cap, const Inner& inner, long long* evals) {
     AdaptiveOptions opt;
     opt.abs_tol = 0.5 * tol / (n - 1);
     opt.controlled = 1;
@@ -466,11 +480,11 @@ std::array<double, 3> c_integral(const AverageIntegrand& f, Channel ch, double c
     opt.rule = KronrodRule::k31;
     const double inner_budget = 0.5 * tol / (n - 1);
     const std::size_t slot = ch == Channel::reflection ? 0 : 1;
-    std::array<double, 3> out{};
+    std::array<double, 2> out{};
     for (int j = 1; j < n; ++j) {
         const double c0 = cs[static_cast<std::size_t>(j) - 1], len = cs[static_cast<std::size_t>(j)] - c0;
         if (!(len > 0.0)) continue;
-        long long inner = 0;
+        long long inner_evals = 0;
         const Estimate<2> e = integrate_adaptive<2>(
             [&](double u) -> std::array<double, 2> {
                 const double c = c0 + len * smoothstep(u);
@@ -479,20 +493,34 @@ std::array<double, 3> c_integral(const AverageIntegrand& f, Channel ch, double c
                 const std::array<double, 3> fr = fresnel_split(c, f.eta);
                 const double weight = w * fr[slot];
                 if (!(weight > 0.0)) return {0.0, 0.0};
-                const std::array<double, 2> k = psi_integral(f, ch, cos_h, sin_h, c, fr[2],
-                                                             std::min(kMaxInnerRel * kPi, inner_budget / weight), &inner);
+                const std::array<double, 2> k =
+                    inner(c, fr[2], std::min(inner_cap, inner_budget / weight), &inner_evals);
                 return {weight * k[0], weight * k[1]};
             },
             0.0, 1.0, opt);
-        out[slot] += e.value[0];
-        out[2] += e.error[0] + e.value[1];
-        *evals += e.evaluations + inner;
+        out[0] += e.value[0];
+        out[1] += e.error[0] + e.value[1];
+        *evals += e.evaluations + inner_evals;
     }
     return out;
 }
 
-// One channel of the average over x, c and psi.
-Estimate<1> glass_average_channel(double alpha, double eta, Visibility vis, Channel ch, double abs_tol) {
+// The break points 0, 1, b0 and b1 (when inside (0, 1)), ascending and
+// distinct, and their count.
+std::pair<std::array<double, 4>, int> c_breaks(double b0, double b1) {
+    std::array<double, 4> cs{0.0, 1.0, 1.0, 1.0};
+    int n = 2;
+    for (double b : {b0, b1})
+        if (b > 0.0 && b < 1.0) cs[static_cast<std::size_t>(n++)] = b;
+    std::sort(cs.begin(), cs.begin() + n);
+    n = static_cast<int>(std::unique(cs.begin(), cs.begin() + n) - cs.begin());
+    return {cs, n};
+}
+
+// One channel of the average with x outermost, then c, then psi; c split
+// at sin(theta_h), where the domain of psi stops being the whole circle,
+// and at the critical c (reflection from inside).
+Estimate<1> glass_average_x_outer(double alpha, double eta, Visibility vis, Channel ch, double abs_tol) {
     const AverageIntegrand f(alpha, vis, eta);
     // x = ln(tan(theta_h) / alpha) as in ggx_glass, split inside where
     // sin(theta_h) reaches the critical c.
@@ -501,21 +529,73 @@ Estimate<1> glass_average_channel(double alpha, double eta, Visibility vis, Chan
     // The measure D(h) dw_h with the azimuth of h integrated out is
     // (1/2) sech^2(x) dx / cos(theta_h); with 1/pi and the two halves of
     // psi: sech^2(x) / (pi cos(theta_h)) dx.
-    const Estimate<2> e = integrate_over_x(xs, alpha, 1.0, abs_tol,
-                                           [&](double t, double w, double inner_budget, long long* evals) {
-                                               const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
-                                               w /= cos_h;
-                                               const double tol = std::min(kMaxInnerRel * kPi, inner_budget / w);
-                                               std::array<double, 3> r = c_integral(f, ch, cos_h, sin_h, tol, evals);
-                                               for (double& v : r) v *= w;
-                                               return r;
-                                           });
-    const std::size_t slot = ch == Channel::reflection ? 0 : 1;
+    const Estimate<2> e = integrate_over_x(
+        xs, alpha, 1.0, abs_tol, [&](double t, double w, double inner_budget, long long* evals) {
+            const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
+            w /= cos_h;
+            const auto [cs, n] = c_breaks(sin_h, f.c_crit);
+            const std::array<double, 2> r = integrate_over_c(
+                f, ch, cs, n, std::min(kMaxInnerRel * kPi, inner_budget / w), kMaxInnerRel * kPi,
+                [&](double c, double cos_t, double tol, long long* ev) {
+                    return psi_integral(f, ch, cos_h, sin_h, c, cos_t, tol, ev);
+                },
+                evals);
+            return std::array<double, 3>{w * r[0], 0.0, w * r[1]};
+        });
     Estimate<1> out;
-    out.value[0] = e.value[slot];
-    out.error[0] = e.error[slot];
+    out.value[0] = e.value[0];
+    out.error[0] = e.error[0];
     out.evaluations = e.evaluations;
     return out;
+}
+
+// Integral over x = ln(tan(theta_h) / alpha) at fixed c = wo.h of the psi
+// integral K (reflection or transmission) under the measure of h:
+// {value, error estimate}. Split where sin(theta_h) = c, where the domain
+// of psi stops being the whole circle (K has a square-root kink there).
+std::array<double, 2> x_integral_at_c(const AverageIntegrand& f, Channel ch, double c, double cos_t, double tol,
+                                      long long* evals) {
+    std::vector<double> xs;
+    const double s_c = std::sqrt((1.0 - c) * (1.0 + c));
+    if (c > 0.0 && s_c > 0.0) xs.push_back(std::log(c / s_c / f.ggx.alpha));
+    const Estimate<2> e =
+        integrate_over_x(xs, f.ggx.alpha, 1.0, tol, [&](double t, double w, double inner_budget, long long* ev) {
+            const double cos_h = 1.0 / std::sqrt(1.0 + t * t), sin_h = t * cos_h;
+            w /= cos_h;
+            const std::array<double, 2> k =
+                psi_integral(f, ch, cos_h, sin_h, c, cos_t, std::min(kMaxInnerRel * kPi, inner_budget / w), ev);
+            return std::array<double, 3>{w * k[0], 0.0, w * k[1]};
+        });
+    *evals += e.evaluations;
+    return {e.value[0], e.error[0]};
+}
+
+// One channel of the average with c = wo.h outermost (c F or c (1 - F)
+// times the x integral at that c), split at the critical c for reflection
+// from inside, where F has its kink. With c outside, the kink of K at
+// sin(theta_h) = c is a break of the x integral. Measured on the 16x16
+// default grid, the transmission takes 22 % fewer evaluations in this
+// order than with x outermost; the reflection from outside 24 % more (its
+// domain of psi shrinks to nothing as c -> 0, at a scale of c ~ alpha that
+// the c rule then has to resolve), so each channel takes its own order.
+Estimate<1> glass_average_c_outer(double alpha, double eta, Visibility vis, Channel ch, double abs_tol) {
+    const AverageIntegrand f(alpha, vis, eta);
+    const auto [cs, n] = c_breaks(f.c_crit, 0.0);
+    long long evals = 0;
+    const std::array<double, 2> r = integrate_over_c(
+        f, ch, cs, n, abs_tol, kMaxInnerRel,
+        [&](double c, double cos_t, double tol, long long* ev) { return x_integral_at_c(f, ch, c, cos_t, tol, ev); },
+        &evals);
+    Estimate<1> out;
+    out.value[0] = r[0];
+    out.error[0] = r[1];
+    out.evaluations = static_cast<int>(evals);
+    return out;
+}
+
+Estimate<1> glass_average_channel(double alpha, double eta, Visibility vis, Channel ch, double abs_tol) {
+    return ch == Channel::reflection ? glass_average_x_outer(alpha, eta, vis, ch, abs_tol)
+                                     : glass_average_c_outer(alpha, eta, vis, ch, abs_tol);
 }
 
 }  // namespace
