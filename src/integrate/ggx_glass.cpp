@@ -21,9 +21,10 @@
 // So the phi integral at fixed t is split at the azimuths of those
 // thresholds (acos of (c - a0) / a1) into pieces on which both channels are
 // smooth, each done by adaptive Gauss-Kronrod (15, 31) in u with
-// phi = p0 + (p1 - p0)(3u^2 - 2u^3), which turns a square-root end into an
-// analytic one. The outer integral in x is split where a threshold meets
-// the ends of the ring (phi = 0 or pi), found in closed form:
+// w = w0 + (w1 - w0)(3u^2 - 2u^3), w = tan(phi / 4) (cos(phi) rational in
+// w), which turns a square-root end into an analytic one. The outer
+// integral in x is split where a threshold meets the ends of the ring
+// (phi = 0 or pi), found in closed form:
 //   reflection      t_a = mu_o / (1 + sin_o), t_b = (1 + sin_o) / mu_o
 //   c = 0           t = mu_o / sin_o
 //   critical c      theta_h = theta_o + theta_c, theta_o - theta_c, theta_c - theta_o
@@ -192,16 +193,21 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     opt.controlled = 2;
     opt.max_intervals = 400;
     opt.rule = KronrodRule::k31;
-    double p0 = acos_clamped(cs[0]);
+    // Each piece in w = tan(phi / 4) under the smoothstep map: cos(phi) =
+    // 2 ((1 - w^2) / (1 + w^2))^2 - 1 and dphi = 4 dw / (1 + w^2) are
+    // rational (no cosine per node), and the map is analytic on [0, pi].
+    double w0 = std::tan(0.25 * acos_clamped(cs[0]));
     for (int j = 1; j < n; ++j) {
-        const double p1 = acos_clamped(cs[j]);
-        const double len = p1 - p0;
+        const double w1 = std::tan(0.25 * acos_clamped(cs[j]));
+        const double len = w1 - w0;
         if (len > 0.0) {
             const Estimate<2> e = integrate_adaptive<2>(
                 [&](double u) {
-                    const double phi = p0 + len * smoothstep(u);
-                    const double jac = len * smoothstep_slope(u);
-                    const double c = q.a1 * std::cos(phi) + q.a0;
+                    const double w = w0 + len * smoothstep(u);
+                    const double r = 1.0 / (1.0 + w * w);
+                    const double half = (1.0 - w * w) * r;
+                    const double jac = 4.0 * r * len * smoothstep_slope(u);
+                    const double c = q.a1 * (2.0 * half * half - 1.0) + q.a0;
                     std::array<double, 2> y = f.at_c(q, c);
                     y[0] *= jac;
                     y[1] *= jac;
@@ -213,7 +219,7 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
             out[2] += e.error[0] + e.error[1];
             *evals += e.evaluations;
         }
-        p0 = p1;
+        w0 = w1;
     }
     return out;
 }

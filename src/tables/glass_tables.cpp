@@ -23,12 +23,13 @@ const char* kQuadratureRule =
     "most 8 units of x, the "
     "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
     "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (15,31) under "
-    "that map on each piece; E_avg: E_R and E_T apart, E_R over the same x, then c = wo.h by "
-    "adaptive Gauss-Kronrod (15,31) split at sin(theta_h) and (inside) the critical c, E_T over c "
-    "by (15,31), then the same x split at sin(theta_h) = c, each then over the azimuth of wo about h "
-    "in tan(psi/4) by adaptive Gauss-Kronrod (7,15) on its closed-form domain (E_R on half of it, the integrand "
-    "even about pi/2); E_T avg inside by reciprocity from outside, E_T(1/n) = E_T(n) / n^2; error "
-    "per value: QUADPACK estimate plus the integrated inner estimates";
+    "that map in tan(phi/4) on each piece; E_avg: E_R and E_T apart, E_R over the same x, then "
+    "c = wo.h by adaptive Gauss-Kronrod (15,31) split at sin(theta_h) and (inside) the critical c, "
+    "E_T over c by (15,31), then the same x split at sin(theta_h) = c, each then over the azimuth of "
+    "wo about h in tan(psi/4) by adaptive Gauss-Kronrod (7,15) on its closed-form domain (E_R on "
+    "half of it, the integrand even about pi/2); E_T avg inside by reciprocity from outside, "
+    "E_T(1/n) = E_T(n) / n^2; error per value: QUADPACK estimate plus the integrated inner "
+    "estimates";
 const char* kMcSampler =
     "mixture of GGX visible normals (Heitz 2018; 0.7), normals logistic in ln(tan(theta_h)/alpha) with "
     "scale 2 (0.2) and normals with wo.h = u^4 (0.1), both channels from each normal, weighed by the "
