@@ -49,10 +49,20 @@ struct Ggx {
     // for small alpha and grazing mu.
     double lambda(double mu) const {
         if (mu <= 0.0) return HUGE_VAL;
+        const auto [num, den] = lambda_parts(mu);
+        return num / den;
+    }
+
+    // Lambda(mu) = num / den for mu > 0, both positive: num = alpha^2 (1 -
+    // mu^2), den = 2 mu (r + mu), r = sqrt(mu^2 + alpha^2 (1 - mu^2))
+    // (r - mu = num / (r + mu) avoids cancellation).
+    struct LambdaParts {
+        double num, den;
+    };
+    LambdaParts lambda_parts(double mu) const {
         const double mu2 = mu * mu;
         const double r = std::sqrt(mu2 + alpha * alpha * (1.0 - mu2));
-        // r - mu = alpha^2 (1 - mu^2) / (r + mu) avoids cancellation.
-        return alpha * alpha * (1.0 - mu2) / ((r + mu) * 2.0 * mu);
+        return {alpha * alpha * (1.0 - mu2), (r + mu) * 2.0 * mu};
     }
 
     double G1(double mu) const {
@@ -73,6 +83,21 @@ struct Ggx {
         if (vis == Visibility::separable) return G1(mu_o) * G1(mu_i);
         if (vis == Visibility::schlick_smith) return G1_schlick(mu_o) * G1_schlick(mu_i);
         return 1.0 / (1.0 + lambda(mu_o) + lambda(mu_i));
+    }
+
+    // G2 as one quotient: one division where G2 takes up to three. The same
+    // value up to rounding (a few ulps); for inner loops where the
+    // divisions are the cost (the glass averages).
+    double G2_one_quotient(double mu_o, double mu_i, Visibility vis) const {
+        if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
+        if (vis == Visibility::schlick_smith) {
+            const double k = 0.5 * alpha;
+            return mu_o * mu_i / ((mu_o * (1.0 - k) + k) * (mu_i * (1.0 - k) + k));
+        }
+        const LambdaParts o = lambda_parts(mu_o), i = lambda_parts(mu_i);
+        // G1 = den / (den + num); 1 / (1 + Lambda_o + Lambda_i) likewise.
+        if (vis == Visibility::separable) return o.den * i.den / ((o.den + o.num) * (i.den + i.num));
+        return o.den * i.den / (o.den * i.den + o.num * i.den + i.num * o.den);
     }
 
     // Visible normal for direction wo (wo.z > 0) from two uniform numbers

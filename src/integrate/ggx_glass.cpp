@@ -463,7 +463,7 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
             const double mu_o = a + b * cp;
             if (!(mu_o > 0.0)) return {0.0};
             const double mu_x = reflect ? a - b * cp : at + bt * cp;
-            return {mu_x > 0.0 ? f.ggx.G2(mu_o, mu_x, f.vis) * 4.0 * q * wl : 0.0};
+            return {mu_x > 0.0 ? f.ggx.G2_one_quotient(mu_o, mu_x, f.vis) * 4.0 * q * wl : 0.0};
         },
         0.0, 1.0, opt);
     *evals += e.evaluations;
