@@ -70,7 +70,13 @@ constexpr double kMaxNestedTol = 1e-5;
 double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
 double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
 
-double acos_clamped(double x) { return x >= 1.0 ? 0.0 : x <= -1.0 ? kPi : std::acos(x); }
+// tan(acos(x) / 4) for x in [-1, 1], without acos or tan: with phi = acos(x),
+// tan(phi / 2) = sqrt((1 - x) / (1 + x)) and tan(phi / 4) = tan(phi / 2) /
+// (1 + sqrt(1 + tan^2(phi / 2))) = sqrt(1 - x) / (sqrt(1 + x) + sqrt(2)).
+double tan_quarter_of_acos(double x) {
+    x = std::clamp(x, -1.0, 1.0);
+    return std::sqrt(1.0 - x) / (std::sqrt(1.0 + x) + std::sqrt(2.0));
+}
 
 // {F, 1 - F, cos_t} at c = wo.h: the exact unpolarized dielectric Fresnel
 // and the cosine of the refracted direction about h. {1, 0, 0} under total
@@ -196,9 +202,9 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     // Each piece in w = tan(phi / 4) under the smoothstep map: cos(phi) =
     // 2 ((1 - w^2) / (1 + w^2))^2 - 1 and dphi = 4 dw / (1 + w^2) are
     // rational (no cosine per node), and the map is analytic on [0, pi].
-    double w0 = std::tan(0.25 * acos_clamped(cs[0]));
+    double w0 = tan_quarter_of_acos(cs[0]);
     for (int j = 1; j < n; ++j) {
-        const double w1 = std::tan(0.25 * acos_clamped(cs[j]));
+        const double w1 = tan_quarter_of_acos(cs[j]);
         const double len = w1 - w0;
         if (len > 0.0) {
             const Estimate<2> e = integrate_adaptive<2>(
@@ -438,10 +444,12 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     const double r = b > 0.0 ? a / b : HUGE_VAL;
     const bool reflect = ch == Channel::reflection;
     // reflection: (psi_r, pi/2], doubled; transmission: [0, psi_o].
-    const double p0 = reflect && r < 1.0 ? acos_clamped(r) : 0.0;
-    const double p1 = reflect ? 0.5 * kPi : r < 1.0 ? kPi - acos_clamped(r) : kPi;
-    const double len = p1 - p0;
-    if (!(len > 0.0)) return {0.0, 0.0};
+    // The ends in w = tan(psi / 4) (below): psi_r = acos(r), psi_o = pi -
+    // acos(r) = acos(-r), pi / 2 (w = sqrt(2) - 1) and pi (w = 1).
+    const double w0 = reflect && r < 1.0 ? tan_quarter_of_acos(r) : 0.0;
+    const double w1 = reflect ? std::sqrt(2.0) - 1.0 : r < 1.0 ? tan_quarter_of_acos(-r) : 1.0;
+    const double wl = w1 - w0;
+    if (!(wl > 0.0)) return {0.0, 0.0};
     const double at = cos_t * cos_h, bt = s_c / f.eta * sin_h;
     AdaptiveOptions opt;
     opt.abs_tol = reflect ? 0.5 * tol : tol;
@@ -453,7 +461,6 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     // cosine was 45 % of the averages' time). The map is analytic on [0, pi],
     // and the integrand analytic up to both ends (G2 is analytic in mu down
     // to mu = 0 where a domain ends).
-    const double w0 = std::tan(0.25 * p0), wl = std::tan(0.25 * p1) - w0;
     const Estimate<1> e = integrate_adaptive<1>(
         [&](double u) -> std::array<double, 1> {
             const double w = w0 + wl * u;
