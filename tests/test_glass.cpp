@@ -378,3 +378,21 @@ TEST(GlassIntegrals, OneQuotientG2IsG2ToAFewUlps) {
     EXPECT_EQ(Ggx{0.5}.G2_one_quotient(0.0, 0.5, kHc), 0.0);
     EXPECT_EQ(Ggx{0.5}.G2_one_quotient(0.5, -0.1, Visibility::separable), 0.0);
 }
+
+TEST(GlassIntegrals, SharedReflectionIntegralsGiveTheValuesOfAFreshRun) {
+    // The reflection averages from outside share their x integrals at each
+    // c between indices of one alpha: after other indices, a value must be
+    // what it is computed alone, and still agree with the other route.
+    for (double alpha : {0.01, 0.4}) {
+        clear_shared_results();
+        const Estimate<1> fresh = ggx_glass_average_reflection(alpha, 1.5, kHc, 2e-8);
+        clear_shared_results();
+        for (double n : {1.1, 2.0, 3.0}) ggx_glass_average_reflection(alpha, n, kHc, 2e-8);
+        const Estimate<1> shared = ggx_glass_average_reflection(alpha, 1.5, kHc, 2e-8);
+        clear_shared_results();
+        EXPECT_EQ(shared.value[0], fresh.value[0]) << "alpha " << alpha;
+        EXPECT_EQ(shared.error[0], fresh.error[0]) << "alpha " << alpha;
+        const Estimate<2> other = ggx_glass_average_over_mu(alpha, 1.5, kHc, 1e-8);
+        EXPECT_LE(std::abs(fresh.value[0] - other.value[0]), fresh.error[0] + other.error[0]) << "alpha " << alpha;
+    }
+}
