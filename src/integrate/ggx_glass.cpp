@@ -63,8 +63,14 @@ constexpr double kSmallestV = 1e-100;
 // width 8 the (15, 31) Kronrod rule converges like 1.47^-62 ~ 5e-11; the
 // adaptive bisection refines where that is not enough.
 constexpr double kPanelWidth = 8.0;
-// The loosest tolerance of a ring integral, relative to its integrand's size.
-constexpr double kMaxInnerRel = 1e-6;
+// The loosest tolerance of an inner integral, relative to its integrand's
+// size, where the outer weight is small enough to allow more. (1e-6 cost
+// 4 % more evaluations; every inner estimate is integrated into the
+// reported error, so the cap is a bound on work, not on honesty.)
+constexpr double kMaxInnerRel = 1e-4;
+// Segments of x shorter than this (between close break points) take the
+// (7, 15) rule instead of (15, 31): 6 % fewer evaluations.
+constexpr double kShortSegment = 0.25;
 // The loosest tolerance of an E(mu) inside an average.
 constexpr double kMaxNestedTol = 1e-5;
 
@@ -311,6 +317,8 @@ Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, do
         const double len = (side == 0 ? xb : side < 0 ? std::exp(xb) : std::exp(-xa)) - y0;
         const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
         long long inner_evals = 0;
+        AdaptiveOptions seg_opt = outer_opt;
+        if (side == 0 && len < kShortSegment) seg_opt.rule = KronrodRule::k15;
         const Estimate<3> e = integrate_adaptive_panels<3>(
             [&](double u) -> std::array<double, 3> {
                 const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
@@ -328,7 +336,7 @@ Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, do
                 if (!(w > 0.0)) return {0.0, 0.0, 0.0};
                 return inner(t, w, inner_budget, &inner_evals);
             },
-            0.0, 1.0, panels, outer_opt);
+            0.0, 1.0, panels, seg_opt);
         for (int c = 0; c < 2; ++c) {
             out.value[static_cast<std::size_t>(c)] += e.value[static_cast<std::size_t>(c)];
             out.error[static_cast<std::size_t>(c)] += 2.0 * e.error[static_cast<std::size_t>(c)] + e.value[2];
