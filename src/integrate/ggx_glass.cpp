@@ -68,9 +68,12 @@ constexpr double kPanelWidth = 8.0;
 // 4 % more evaluations; every inner estimate is integrated into the
 // reported error, so the cap is a bound on work, not on honesty.)
 constexpr double kMaxInnerRel = 1e-4;
-// Segments of x shorter than this (between close break points) take the
-// (7, 15) rule instead of (15, 31): 6 % fewer evaluations.
+// The rule of a segment of x by its length (segments between close break
+// points are short): (7, 15) below 0.25, (10, 21) below 1, else (15, 31).
+// 6 % and then 6 % fewer evaluations on the directional tables (a longer
+// reach of (10, 21) took more).
 constexpr double kShortSegment = 0.25;
+constexpr double kMediumSegment = 1.0;
 // The loosest tolerance of an E(mu) inside an average.
 constexpr double kMaxNestedTol = 1e-5;
 
@@ -319,6 +322,7 @@ Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, do
         long long inner_evals = 0;
         AdaptiveOptions seg_opt = outer_opt;
         if (side == 0 && len < kShortSegment) seg_opt.rule = KronrodRule::k15;
+        else if (side == 0 && len < kMediumSegment) seg_opt.rule = KronrodRule::k21;
         const Estimate<3> e = integrate_adaptive_panels<3>(
             [&](double u) -> std::array<double, 3> {
                 const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
