@@ -20,7 +20,7 @@ const char* kQuadratureRule =
     "adaptive Gauss-Kronrod (15,31) over the half vector in x = ln(tan(theta_h)/alpha), split "
     "where a threshold of wo.h (reflection above the horizon, refraction below it, the critical "
     "angle, wo.h = 0) meets phi = 0 or pi or another threshold, and at x = +-1, from panels of at "
-    "most 8 units of x, the "
+    "most 8 units of x ((10,21) on pieces shorter than 1, (7,15) shorter than 0.25), the "
     "first and last piece (to x = -inf, +inf) over v = e^(-|x|), under the map 3u^2 - 2u^3 on each "
     "piece; nested with phi split at the same thresholds and adaptive Gauss-Kronrod (15,31) under "
     "that map in tan(phi/4) on each piece; E_avg: E_R and E_T apart, E_R inside over the same x, "
