@@ -537,13 +537,15 @@ std::array<double, 2> integrate_over_c(const AverageIntegrand& f, Channel ch, co
 // The break points 0, 1, b0 and b1 (when inside (0, 1)), ascending and
 // distinct, and their count.
 std::pair<std::array<double, 4>, int> c_breaks(double b0, double b1) {
+    // Built ascending and without repeats directly (a sort of the used part
+    // of the array draws a false -Warray-bounds from GCC 12).
+    if (b1 < b0) std::swap(b0, b1);
     std::array<double, 4> cs{0.0, 1.0, 1.0, 1.0};
-    int n = 2;
+    std::size_t n = 1;
     for (double b : {b0, b1})
-        if (b > 0.0 && b < 1.0) cs[static_cast<std::size_t>(n++)] = b;
-    std::sort(cs.begin(), cs.begin() + n);
-    n = static_cast<int>(std::unique(cs.begin(), cs.begin() + n) - cs.begin());
-    return {cs, n};
+        if (b > cs[n - 1] && b < 1.0) cs[n++] = b;
+    cs[n++] = 1.0;
+    return {cs, static_cast<int>(n)};
 }
 
 // One channel of the average with x outermost, then c, then psi; c split
