@@ -35,13 +35,10 @@
 #include <cmath>
 #include <vector>
 
-#if defined(__SSE2__)
-#include <immintrin.h>
-#endif
-
 #include "integrate/ggx_simd.h"
 #include "integrate/half_circle.h"
 #include "integrate/reflection_clip.h"
+#include "integrate/simd_lanes.h"
 
 namespace brdflut {
 namespace {
@@ -135,26 +132,7 @@ int no_arc(const PhiConstants&, double, double, const double*, double*, int) { r
 
 #if defined(__SSE2__)
 namespace sse2 {
-struct V {
-    __m128d v;
-    static constexpr int width = 2;
-    static V set1(double x) { return {_mm_set1_pd(x)}; }
-    static V load(const double* p) { return {_mm_loadu_pd(p)}; }
-};
-inline V operator+(V a, V b) { return {_mm_add_pd(a.v, b.v)}; }
-inline V operator-(V a, V b) { return {_mm_sub_pd(a.v, b.v)}; }
-inline V operator*(V a, V b) { return {_mm_mul_pd(a.v, b.v)}; }
-inline V operator/(V a, V b) { return {_mm_div_pd(a.v, b.v)}; }
-inline V sqrt(V a) { return {_mm_sqrt_pd(a.v)}; }
-inline V gt(V a, V b) { return {_mm_cmpgt_pd(a.v, b.v)}; }
-inline V band(V a, V b) { return {_mm_and_pd(a.v, b.v)}; }
-inline V bor(V a, V b) { return {_mm_or_pd(a.v, b.v)}; }
-inline V bandnot(V a, V b) { return {_mm_andnot_pd(a.v, b.v)}; }
-// {a_j, b_j} at y + 2 j for the lanes j.
-inline void store_pairs(double* y, V a, V b) {
-    _mm_storeu_pd(y, _mm_unpacklo_pd(a.v, b.v));
-    _mm_storeu_pd(y + 2, _mm_unpackhi_pd(a.v, b.v));
-}
+using simd::sse2::V;
 #include "integrate/ggx_phi_kernels.inc"
 int circle(const PhiConstants& k, const double* c, double* y, int n) { return circle_kernel(k, c, y, n); }
 template <bool kQuarter>
@@ -164,39 +142,13 @@ int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y
 }  // namespace sse2
 #endif
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define BRDFLUT_HAVE_AVX2_KERNELS 1
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
 // Compiled for AVX2 whatever the target of the build, and called only when
 // the processor has it. AVX2 alone implies no fused multiply-add, so the
 // lanes round exactly as the SSE2 ones.
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+BRDFLUT_AVX2_BEGIN
 namespace avx2 {
-struct V {
-    __m256d v;
-    static constexpr int width = 4;
-    static V set1(double x) { return {_mm256_set1_pd(x)}; }
-    static V load(const double* p) { return {_mm256_loadu_pd(p)}; }
-};
-inline V operator+(V a, V b) { return {_mm256_add_pd(a.v, b.v)}; }
-inline V operator-(V a, V b) { return {_mm256_sub_pd(a.v, b.v)}; }
-inline V operator*(V a, V b) { return {_mm256_mul_pd(a.v, b.v)}; }
-inline V operator/(V a, V b) { return {_mm256_div_pd(a.v, b.v)}; }
-inline V sqrt(V a) { return {_mm256_sqrt_pd(a.v)}; }
-inline V gt(V a, V b) { return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)}; }
-inline V band(V a, V b) { return {_mm256_and_pd(a.v, b.v)}; }
-inline V bor(V a, V b) { return {_mm256_or_pd(a.v, b.v)}; }
-inline V bandnot(V a, V b) { return {_mm256_andnot_pd(a.v, b.v)}; }
-inline void store_pairs(double* y, V a, V b) {
-    const __m256d lo = _mm256_unpacklo_pd(a.v, b.v);  // {a0, b0, a2, b2}
-    const __m256d hi = _mm256_unpackhi_pd(a.v, b.v);  // {a1, b1, a3, b3}
-    _mm256_storeu_pd(y, _mm256_permute2f128_pd(lo, hi, 0x20));
-    _mm256_storeu_pd(y + 4, _mm256_permute2f128_pd(lo, hi, 0x31));
-}
+using simd::avx2::V;
 #include "integrate/ggx_phi_kernels.inc"
 
 // detail::panel_sums (K = 15, 31) and panel_sums_21 for two channels, two
@@ -306,11 +258,7 @@ int arc(const PhiConstants& k, double a1s, double kj, const double* u, double* y
     return i;
 }
 }  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+BRDFLUT_AVX2_END
 #endif
 
 PhiKernels pick_phi_kernels(int width) {
