@@ -11,6 +11,7 @@
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
 #include "integrate/ggx_simd.h"
+#include "test_support.h"
 
 using namespace brdflut;
 
@@ -175,27 +176,14 @@ TEST(GgxSplitSum, ErrorEstimateIsHonestOnADenseSpreadAtTheTablesTolerances) {
 TEST(GgxSplitSum, EverySimdWidthGivesTheSameBits) {
     // The phi integrands run 4 (AVX2), 2 (SSE2) or 1 node at a time; each
     // width must give exactly the values, errors and work of one at a time.
-    const int widest = detail::ggx_phi_simd_width();
-    auto run = [](int width) {
-        detail::set_ggx_phi_simd_width(width);
+    test::expect_same_bits_at_every_ggx_simd_width([] {
         std::vector<Estimate<2>> out;
         for (Visibility vis : kBoth)
             for (double alpha : {(0.5 / 128) * (0.5 / 128), 3e-3, 0.08, 0.45, 1.0})
                 for (double mu : {0.5 / 128, 0.04, 0.3, 0.8, 1.0})
                     out.push_back(ggx_split_sum(mu, alpha, vis, kGgxTableTolerance));
         return out;
-    };
-    const std::vector<Estimate<2>> one = run(1);
-    for (int width : {2, 4}) {
-        if (detail::set_ggx_phi_simd_width(width) != width) continue;  // not on this processor
-        const std::vector<Estimate<2>> w = run(width);
-        for (std::size_t n = 0; n < one.size(); ++n) {
-            EXPECT_EQ(w[n].value, one[n].value) << "width " << width << " case " << n;
-            EXPECT_EQ(w[n].error, one[n].error) << "width " << width << " case " << n;
-            EXPECT_EQ(w[n].evaluations, one[n].evaluations) << "width " << width << " case " << n;
-        }
-    }
-    EXPECT_EQ(detail::set_ggx_phi_simd_width(widest), widest);
+    });
 }
 
 TEST(GgxSplitSum, AgreesWithMonteCarloWithinFourStandardErrors) {

@@ -10,9 +10,12 @@
 #include <string>
 #include <sys/wait.h>
 
+#include <gtest/gtest.h>
+
 #include "brdflut/catalogue.h"
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
+#include "integrate/ggx_simd.h"
 #include "brdflut/table.h"
 
 namespace brdflut::test {
@@ -82,6 +85,27 @@ inline CliResult run_cli(const std::string& args, const TempDir& scratch) {
     r.out = read_file(out);
     r.err = read_file(err);
     return r;
+}
+
+// Runs cases() at every SIMD width of the GGX integrands (1, and 2 and 4
+// where the processor has them) and expects each width to give exactly the
+// values, errors and evaluations of one node at a time; restores the widest.
+template <class Cases>
+void expect_same_bits_at_every_ggx_simd_width(const Cases& cases) {
+    const int widest = brdflut::detail::ggx_phi_simd_width();
+    brdflut::detail::set_ggx_phi_simd_width(1);
+    const auto one = cases();
+    for (int width : {2, 4}) {
+        if (brdflut::detail::set_ggx_phi_simd_width(width) != width) continue;  // not on this processor
+        const auto w = cases();
+        EXPECT_EQ(w.size(), one.size());
+        for (std::size_t n = 0; n < one.size() && n < w.size(); ++n) {
+            EXPECT_EQ(w[n].value, one[n].value) << "width " << width << " case " << n;
+            EXPECT_EQ(w[n].error, one[n].error) << "width " << width << " case " << n;
+            EXPECT_EQ(w[n].evaluations, one[n].evaluations) << "width " << width << " case " << n;
+        }
+    }
+    EXPECT_EQ(brdflut::detail::set_ggx_phi_simd_width(widest), widest);
 }
 
 }  // namespace brdflut::test

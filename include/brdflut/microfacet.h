@@ -85,21 +85,6 @@ struct Ggx {
         return 1.0 / (1.0 + lambda(mu_o) + lambda(mu_i));
     }
 
-    // G2 as one quotient: one division where G2 takes up to three. The same
-    // value up to rounding (a few ulps); for inner loops where the
-    // divisions are the cost (the glass averages).
-    double G2_one_quotient(double mu_o, double mu_i, Visibility vis) const {
-        if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
-        if (vis == Visibility::schlick_smith) {
-            const double k = 0.5 * alpha;
-            return mu_o * mu_i / ((mu_o * (1.0 - k) + k) * (mu_i * (1.0 - k) + k));
-        }
-        const LambdaParts o = lambda_parts(mu_o), i = lambda_parts(mu_i);
-        // G1 = den / (den + num); 1 / (1 + Lambda_o + Lambda_i) likewise.
-        if (vis == Visibility::separable) return o.den * i.den / ((o.den + o.num) * (i.den + i.num));
-        return o.den * i.den / (o.den * i.den + o.num * i.den + i.num * o.den);
-    }
-
     // Visible normal for direction wo (wo.z > 0) from two uniform numbers
     // (Heitz 2018). Density: G1(wo) max(0, wo.m) D(m) / wo.z.
     Vec3 sample_visible_normal(const Vec3& wo, double u1, double u2) const;

@@ -40,7 +40,11 @@
 // v = e^(-|x|), in which the tails are analytic up to v = 0. Each inner
 // integral gets the tolerance its outer weight requires, and its error
 // estimate is integrated with the values, so the reported error covers both
-// levels.
+// levels. The ring integrand and the averages' azimuth integrand are
+// evaluated four nodes at a time with AVX2 when the processor has it, else
+// two with SSE2, over a common denominator with one division per node
+// (ggx_glass_kernels.inc); every width computes the same operations, so the
+// values do not depend on the machine.
 #include "brdflut/glass_integrals.h"
 
 #include <algorithm>
@@ -48,7 +52,9 @@
 #include <cmath>
 #include <vector>
 
+#include "integrate/ggx_simd.h"
 #include "integrate/glass_detail.h"
+#include "integrate/simd_lanes.h"
 #include "tables/shared_results.h"
 
 namespace brdflut {
@@ -86,6 +92,68 @@ double smoothstep_slope(double u) { return 6.0 * u * (1.0 - u); }
 double tan_quarter_of_acos(double x) {
     x = std::clamp(x, -1.0, 1.0);
     return std::sqrt(1.0 - x) / (std::sqrt(1.0 + x) + std::sqrt(2.0));
+}
+
+// What the integrand kernels need (ggx_glass_kernels.inc): a piece of a
+// directional ring (see RingPiece) and an azimuth integral of the averages
+// (see PsiIntegrand). vis: 0 height-correlated, 1 separable, 2
+// Schlick-Smith.
+int vis_code(Visibility v) { return v == Visibility::separable ? 1 : v == Visibility::schlick_smith ? 2 : 0; }
+struct RingConstants {
+    double w0, len;               // the piece in w = tan(phi / 4)
+    double a1, a0, cos_h, two_cos_h;  // the Ring
+    double four_len_scale;        // 4 len / (mu_o cos(theta_h))
+    double mu_o, eta, inv_eta, inv_eta2, two_eta, mu_o_over_eta;
+    double alpha2, one_plus_lambda_o, g1_o, schlick_k;
+    int vis;
+};
+struct PsiConstants {
+    double w0, wl;   // the range of w = tan(psi / 4)
+    double a, b;     // mu_o = a + b cos(psi)
+    double ax, bx;   // mu_i = ax + bx cos(psi) (transmission; reflection: a - b cos(psi))
+    double alpha2, schlick_k;
+    bool reflect;
+    int vis;
+};
+
+// The kernels, once per lane type; every width gives the same bits.
+namespace scalar {
+using simd::scalar::V;
+#include "integrate/ggx_glass_kernels.inc"
+}  // namespace scalar
+
+#if defined(__SSE2__)
+namespace sse2 {
+using simd::sse2::V;
+#include "integrate/ggx_glass_kernels.inc"
+}  // namespace sse2
+#endif
+
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+BRDFLUT_AVX2_BEGIN
+namespace avx2 {
+using simd::avx2::V;
+#include "integrate/ggx_glass_kernels.inc"
+void all(const RingConstants& k, const double* u, double* y, int n) { nodes(k, u, y, n); }
+void all(const PsiConstants& k, const double* u, double* y, int n) { nodes(k, u, y, n); }
+}  // namespace avx2
+BRDFLUT_AVX2_END
+#endif
+
+// The n nodes at u, at the width that detail::ggx_phi_simd_width() allows
+// (the width of every GGX integrand).
+template <class Constants, std::size_t N>
+void kernel_nodes(const Constants& k, const double* u, std::array<double, N>* y, int n) {
+    double* out = reinterpret_cast<double*>(y);
+    const int width = detail::ggx_phi_simd_width();
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+    if (width >= 4) return avx2::all(k, u, out, n);
+#endif
+#if defined(__SSE2__)
+    if (width >= 2) return sse2::nodes(k, u, out, n);
+#endif
+    (void)width;
+    scalar::nodes(k, u, out, n);
 }
 
 // {F, 1 - F, cos_t} at c = wo.h: the exact unpolarized dielectric Fresnel
@@ -173,6 +241,60 @@ struct GlassIntegrand {
     }
 };
 
+// A piece of a ring, from w0 to w0 + len in w = tan(phi / 4), under the
+// smoothstep map w = w0 + len (3u^2 - 2u^3): cos(phi) = 2 ((1 - w^2) / (1 +
+// w^2))^2 - 1 and dphi = 4 dw / (1 + w^2) are rational (no cosine per
+// node), and the map is analytic on [0, pi]. The Kronrod panels evaluate it
+// a panel at a time (batch), by the kernels of ggx_glass_kernels.inc.
+struct RingPiece {
+    const GlassIntegrand& f;
+    const Ring& q;
+    double w0, len;
+    RingConstants k;
+
+    RingPiece(const GlassIntegrand& f_, const Ring& q_, double w0_, double len_)
+        : f(f_), q(q_), w0(w0_), len(len_),
+          k{w0_,
+            len_,
+            q_.a1,
+            q_.a0,
+            q_.cos_h,
+            2.0 * q_.cos_h,
+            4.0 * len_ * q_.scale,
+            f_.mu_o,
+            f_.eta,
+            1.0 / f_.eta,
+            1.0 / (f_.eta * f_.eta),
+            2.0 * f_.eta,
+            f_.mu_o / f_.eta,
+            f_.ggx.alpha * f_.ggx.alpha,
+            1.0 + f_.lambda_o,
+            f_.g1_o,
+            0.5 * f_.ggx.alpha,
+            vis_code(f_.vis)} {}
+
+    std::array<double, 2> operator()(double u) const {
+        std::array<double, 2> y;
+        batch(&u, &y, 1);
+        return y;
+    }
+    // With no interface (eta = 1) the kernel's Fresnel would leave a
+    // rounding residue of reflection; at_c has F = 0 exactly.
+    void batch(const double* u, std::array<double, 2>* y, int n) const {
+        if (f.eta != 1.0) return kernel_nodes(k, u, y, n);
+        for (int i = 0; i < n; ++i) {
+            const double w = w0 + len * smoothstep(u[i]);
+            const double r = 1.0 / (1.0 + w * w);
+            const double half = (1.0 - w * w) * r;
+            const double jac = 4.0 * r * len * smoothstep_slope(u[i]);
+            const double c = q.a1 * (2.0 * half * half - 1.0) + q.a0;
+            y[i] = f.at_c(q, c);
+            y[i][0] *= jac;
+            y[i][1] *= jac;
+        }
+    }
+};
+
 // Integral over phi in [0, pi] at fixed t: {E_R, E_T, error estimate}.
 std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double tol, long long* evals) {
     const Ring q = f.ring(t);
@@ -209,27 +331,13 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     opt.controlled = 2;
     opt.max_intervals = 400;
     opt.rule = KronrodRule::k31;
-    // Each piece in w = tan(phi / 4) under the smoothstep map: cos(phi) =
-    // 2 ((1 - w^2) / (1 + w^2))^2 - 1 and dphi = 4 dw / (1 + w^2) are
-    // rational (no cosine per node), and the map is analytic on [0, pi].
+    // Each piece in w = tan(phi / 4) under the smoothstep map (RingPiece).
     double w0 = tan_quarter_of_acos(cs[0]);
     for (int j = 1; j < n; ++j) {
         const double w1 = tan_quarter_of_acos(cs[j]);
         const double len = w1 - w0;
         if (len > 0.0) {
-            const Estimate<2> e = integrate_adaptive<2>(
-                [&](double u) {
-                    const double w = w0 + len * smoothstep(u);
-                    const double r = 1.0 / (1.0 + w * w);
-                    const double half = (1.0 - w * w) * r;
-                    const double jac = 4.0 * r * len * smoothstep_slope(u);
-                    const double c = q.a1 * (2.0 * half * half - 1.0) + q.a0;
-                    std::array<double, 2> y = f.at_c(q, c);
-                    y[0] *= jac;
-                    y[1] *= jac;
-                    return y;
-                },
-                0.0, 1.0, opt);
+            const Estimate<2> e = integrate_adaptive<2>(RingPiece(f, q, w0, len), 0.0, 1.0, opt);
             out[0] += e.value[0];
             out[1] += e.value[1];
             out[2] += e.error[0] + e.error[1];
@@ -450,6 +558,19 @@ struct AverageIntegrand {
 // (theta_h, c): {value, error estimate}.
 enum class Channel { reflection, transmission };
 
+// The integrand of psi_integral in u, w = w0 + wl u, at one node or a
+// panel at a time (batch), by the kernels of ggx_glass_kernels.inc.
+struct PsiIntegrand {
+    PsiConstants k;
+
+    std::array<double, 1> operator()(double u) const {
+        std::array<double, 1> y;
+        batch(&u, &y, 1);
+        return y;
+    }
+    void batch(const double* u, std::array<double, 1>* y, int n) const { kernel_nodes(k, u, y, n); }
+};
+
 std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double cos_h, double sin_h, double c,
                                    double cos_t, double tol, long long* evals) {
     const double s_c = std::sqrt((1.0 - c) * (1.0 + c));
@@ -475,16 +596,7 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     // and the integrand analytic up to both ends (G2 is analytic in mu down
     // to mu = 0 where a domain ends).
     const Estimate<1> e = integrate_adaptive<1>(
-        [&](double u) -> std::array<double, 1> {
-            const double w = w0 + wl * u;
-            const double q = 1.0 / (1.0 + w * w);
-            const double half = (1.0 - w * w) * q;
-            const double cp = 2.0 * half * half - 1.0;
-            const double mu_o = a + b * cp;
-            if (!(mu_o > 0.0)) return {0.0};
-            const double mu_x = reflect ? a - b * cp : at + bt * cp;
-            return {mu_x > 0.0 ? f.ggx.G2_one_quotient(mu_o, mu_x, f.vis) * 4.0 * q * wl : 0.0};
-        },
+        PsiIntegrand{{w0, wl, a, b, at, bt, f.ggx.alpha * f.ggx.alpha, 0.5 * f.ggx.alpha, reflect, vis_code(f.vis)}},
         0.0, 1.0, opt);
     *evals += e.evaluations;
     const double k = reflect ? 2.0 : 1.0;
