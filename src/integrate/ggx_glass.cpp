@@ -96,16 +96,14 @@ double tan_quarter_of_acos(double x) {
 
 // What the integrand kernels need (ggx_glass_kernels.inc): a piece of a
 // directional ring (see RingPiece) and an azimuth integral of the averages
-// (see PsiIntegrand). vis: 0 height-correlated, 1 separable, 2
-// Schlick-Smith.
-int vis_code(Visibility v) { return v == Visibility::separable ? 1 : v == Visibility::schlick_smith ? 2 : 0; }
+// (see PsiIntegrand).
 struct RingConstants {
     double w0, len;               // the piece in w = tan(phi / 4)
     double a1, a0, cos_h, two_cos_h;  // the Ring
     double four_len_scale;        // 4 len / (mu_o cos(theta_h))
     double mu_o, eta, inv_eta, inv_eta2, two_eta, mu_o_over_eta;
     double alpha2, one_plus_lambda_o, g1_o, schlick_k;
-    int vis;
+    Visibility vis;
 };
 struct PsiConstants {
     double w0, wl;   // the range of w = tan(psi / 4)
@@ -113,7 +111,7 @@ struct PsiConstants {
     double ax, bx;   // mu_i = ax + bx cos(psi) (transmission; reflection: a - b cos(psi))
     double alpha2, schlick_k;
     bool reflect;
-    int vis;
+    Visibility vis;
 };
 
 // The kernels, once per lane type; every width gives the same bits.
@@ -249,11 +247,10 @@ struct GlassIntegrand {
 struct RingPiece {
     const GlassIntegrand& f;
     const Ring& q;
-    double w0, len;
     RingConstants k;
 
     RingPiece(const GlassIntegrand& f_, const Ring& q_, double w0_, double len_)
-        : f(f_), q(q_), w0(w0_), len(len_),
+        : f(f_), q(q_),
           k{w0_,
             len_,
             q_.a1,
@@ -271,7 +268,7 @@ struct RingPiece {
             1.0 + f_.lambda_o,
             f_.g1_o,
             0.5 * f_.ggx.alpha,
-            vis_code(f_.vis)} {}
+            f_.vis} {}
 
     std::array<double, 2> operator()(double u) const {
         std::array<double, 2> y;
@@ -283,10 +280,10 @@ struct RingPiece {
     void batch(const double* u, std::array<double, 2>* y, int n) const {
         if (f.eta != 1.0) return kernel_nodes(k, u, y, n);
         for (int i = 0; i < n; ++i) {
-            const double w = w0 + len * smoothstep(u[i]);
+            const double w = k.w0 + k.len * smoothstep(u[i]);
             const double r = 1.0 / (1.0 + w * w);
             const double half = (1.0 - w * w) * r;
-            const double jac = 4.0 * r * len * smoothstep_slope(u[i]);
+            const double jac = 4.0 * r * k.len * smoothstep_slope(u[i]);
             const double c = q.a1 * (2.0 * half * half - 1.0) + q.a0;
             y[i] = f.at_c(q, c);
             y[i][0] *= jac;
@@ -596,7 +593,7 @@ std::array<double, 2> psi_integral(const AverageIntegrand& f, Channel ch, double
     // and the integrand analytic up to both ends (G2 is analytic in mu down
     // to mu = 0 where a domain ends).
     const Estimate<1> e = integrate_adaptive<1>(
-        PsiIntegrand{{w0, wl, a, b, at, bt, f.ggx.alpha * f.ggx.alpha, 0.5 * f.ggx.alpha, reflect, vis_code(f.vis)}},
+        PsiIntegrand{{w0, wl, a, b, at, bt, f.ggx.alpha * f.ggx.alpha, 0.5 * f.ggx.alpha, reflect, f.vis}},
         0.0, 1.0, opt);
     *evals += e.evaluations;
     const double k = reflect ? 2.0 : 1.0;
