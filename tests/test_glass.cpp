@@ -369,20 +369,28 @@ TEST(GlassTables, SharedTransmissionGivesTheValuesOfAFreshRun) {
 
 TEST(GlassIntegrals, SharedReflectionIntegralsGiveTheValuesOfAFreshRun) {
     // The reflection averages from outside share their x integrals at each
-    // c between indices of one alpha: after other indices, a value must be
-    // what it is computed alone, and still agree with the other route.
-    for (double alpha : {0.01, 0.4}) {
-        clear_shared_results();
-        const Estimate<1> fresh = ggx_glass_average_reflection(alpha, 1.5, kHc, 2e-8);
-        clear_shared_results();
-        for (double n : {1.1, 2.0, 3.0}) ggx_glass_average_reflection(alpha, n, kHc, 2e-8);
-        const Estimate<1> shared = ggx_glass_average_reflection(alpha, 1.5, kHc, 2e-8);
-        clear_shared_results();
-        EXPECT_EQ(shared.value[0], fresh.value[0]) << "alpha " << alpha;
-        EXPECT_EQ(shared.error[0], fresh.error[0]) << "alpha " << alpha;
-        const Estimate<2> other = ggx_glass_average_over_mu(alpha, 1.5, kHc, 1e-8);
-        EXPECT_LE(std::abs(fresh.value[0] - other.value[0]), fresh.error[0] + other.error[0]) << "alpha " << alpha;
-    }
+    // c between indices of one alpha, and those from inside the total
+    // reflection average (F = 1) of one alpha: after other indices (on both
+    // sides), a value must be what it is computed alone, and still agree
+    // with the other route.
+    for (double alpha : {0.01, 0.4})
+        for (bool inside : {false, true}) {
+            const double eta = inside ? 1.0 / 1.5 : 1.5;
+            clear_shared_results();
+            const Estimate<1> fresh = ggx_glass_average_reflection(alpha, eta, kHc, 2e-8);
+            clear_shared_results();
+            for (double n : {1.1, 2.0, 3.0}) {
+                ggx_glass_average_reflection(alpha, n, kHc, 2e-8);
+                ggx_glass_average_reflection(alpha, 1.0 / n, kHc, 2e-8);
+            }
+            const Estimate<1> shared = ggx_glass_average_reflection(alpha, eta, kHc, 2e-8);
+            clear_shared_results();
+            EXPECT_EQ(shared.value[0], fresh.value[0]) << "alpha " << alpha << " eta " << eta;
+            EXPECT_EQ(shared.error[0], fresh.error[0]) << "alpha " << alpha << " eta " << eta;
+            const Estimate<2> other = ggx_glass_average_over_mu(alpha, eta, kHc, 1e-8);
+            EXPECT_LE(std::abs(fresh.value[0] - other.value[0]), fresh.error[0] + other.error[0])
+                << "alpha " << alpha << " eta " << eta;
+        }
 }
 
 TEST(GlassIntegrals, EverySimdWidthGivesTheSameBits) {
