@@ -107,6 +107,7 @@ struct RingConstants {
     double mu_o, eta, inv_eta, inv_eta2, two_eta, mu_o_over_eta;
     double alpha2, one_plus_lambda_o, g1_o, schlick_k;
     Visibility vis;
+    bool reflect, transmit;       // the channels the piece can reach
 };
 struct PsiConstants {
     double w0, wl;   // the range of w = tan(psi / 4)
@@ -252,7 +253,7 @@ struct RingPiece {
     const Ring& q;
     RingConstants k;
 
-    RingPiece(const GlassIntegrand& f_, const Ring& q_, double w0_, double len_)
+    RingPiece(const GlassIntegrand& f_, const Ring& q_, double w0_, double len_, bool reflect, bool transmit)
         : f(f_), q(q_),
           k{w0_,
             len_,
@@ -271,7 +272,9 @@ struct RingPiece {
             1.0 + f_.lambda_o,
             f_.g1_o,
             0.5 * f_.ggx.alpha,
-            f_.vis} {}
+            f_.vis,
+            reflect,
+            transmit} {}
 
     std::array<double, 2> operator()(double u) const {
         std::array<double, 2> y;
@@ -336,8 +339,13 @@ std::array<double, 3> ring_integral(const GlassIntegrand& f, double t, double to
     for (int j = 1; j < n; ++j) {
         const double w1 = tan_quarter_of_acos(cs[j]);
         const double len = w1 - w0;
-        if (len > 0.0) {
-            const Estimate<2> e = integrate_adaptive<2>(RingPiece(f, q, w0, len), 0.0, 1.0, opt);
+        // The thresholds c_r and c_t are break points, so each lies wholly
+        // on one side of the piece: its middle tells which channels it has.
+        const double c_mid = q.a0 + q.a1 * 0.5 * (cs[j - 1] + cs[j]);
+        const bool reflect = c_mid > c_r, transmit = c_mid > c_t;
+        if (len > 0.0 && (reflect || transmit)) {
+            const Estimate<2> e =
+                integrate_adaptive<2>(RingPiece(f, q, w0, len, reflect, transmit), 0.0, 1.0, opt);
             out[0] += e.value[0];
             out[1] += e.value[1];
             out[2] += e.error[0] + e.error[1];
