@@ -44,7 +44,7 @@ constexpr Tolerances quadrature_tolerances(double standard) { return {1e-5, stan
 // The glass tables' tolerances: the reference quality is 1e-10, not 1e-12,
 // because the nested glass quadrature reaches 1e-12 only at hundreds of
 // milliseconds per texel (it is still 200 times tighter than the default).
-inline constexpr Tolerances kGlassTolerances{1e-5, 2e-8, 1e-10};
+inline constexpr Tolerances kGlassTolerances{1e-5, 5e-8, 1e-10};
 
 // Method metadata of the adaptive quadrature and of the Monte Carlo route.
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
