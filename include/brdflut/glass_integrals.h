@@ -40,7 +40,7 @@ namespace brdflut {
 inline constexpr double kGlassAbsTolerance = 1e-9;
 // Absolute tolerance of each channel of the glass quadrature tables. The
 // estimates it leaves stay well below it (the largest estimate plus float
-// rounding, at most 3e-8 below 1, is 5.7e-8 over the default and Cycles
+// rounding, at most 3e-8 below 1, is 5.8e-8 over the default and Cycles
 // tables; bench/RESULTS.md), so every stored value is within 1e-7 of the
 // exact integral, which a test checks.
 inline constexpr double kGlassTableTolerance = 5e-8;

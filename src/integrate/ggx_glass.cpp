@@ -80,7 +80,9 @@ constexpr double kLayerFraction = 0.25;
 // The rule of a segment of x by its length (segments between close break
 // points are short): (7, 15) below 0.25, (10, 21) below 1, else (15, 31).
 // 6 % and then 6 % fewer evaluations on the directional tables (a longer
-// reach of (10, 21) took more).
+// reach of (10, 21) took more). The two tails, in v = e^(-|x|), take
+// (10, 21): 7 % fewer evaluations on the directional tables and 8 % on the
+// averages than (15, 31) ((7, 15) on either tail took more).
 constexpr double kShortSegment = 0.25;
 constexpr double kMediumSegment = 1.0;
 // The loosest tolerance of an E(mu) inside an average.
@@ -437,8 +439,9 @@ Estimate<2> integrate_over_x(const std::vector<double>& breaks, double alpha, do
         const int panels = side == 0 ? std::max(1, static_cast<int>(std::ceil(len / kPanelWidth))) : 1;
         long long inner_evals = 0;
         AdaptiveOptions seg_opt = outer_opt;
-        if (side == 0 && len < kShortSegment) seg_opt.rule = KronrodRule::k15;
-        else if (side == 0 && len < kMediumSegment) seg_opt.rule = KronrodRule::k21;
+        if (side != 0) seg_opt.rule = KronrodRule::k21;
+        else if (len < kShortSegment) seg_opt.rule = KronrodRule::k15;
+        else if (len < kMediumSegment) seg_opt.rule = KronrodRule::k21;
         const Estimate<3> e = integrate_adaptive_panels<3>(
             [&](double u) -> std::array<double, 3> {
                 const double y = y0 + len * smoothstep(u), dy = len * smoothstep_slope(u);
