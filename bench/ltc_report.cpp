@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
         heitz_l3[k] = rh.relative_l3;
     });
     std::size_t better = 0, much_worse = 0, much_worse_1e2 = 0, better_exact = 0, much_worse_exact = 0;
-    double worst_ratio = 0.0;
-    std::size_t worst_at = 0;
+    double worst_ratio = 0.0, worst_excess = 0.0;
+    std::size_t worst_at = 0, excess_at = 0, excess_1e2 = 0, excess_5e2 = 0;
     for (std::size_t k = 0; k < n; ++k) {
         better += mine[k] < heitz[k];
         const double ratio = mine[k] / std::max(heitz[k], 1e-3);
@@ -114,6 +114,12 @@ int main(int argc, char** argv) {
         if (ratio > worst_ratio) {
             worst_ratio = ratio;
             worst_at = k;
+        }
+        excess_1e2 += mine[k] - heitz[k] > 1e-2;
+        excess_5e2 += mine[k] - heitz[k] > 5e-2;
+        if (mine[k] - heitz[k] > worst_excess) {
+            worst_excess = mine[k] - heitz[k];
+            excess_at = k;
         }
         if (k / 64 >= 56) {
             grazing_mine.push_back(mine[k]);
@@ -134,6 +140,13 @@ int main(int argc, char** argv) {
                 "worst ratio %.3g at roughness index %zu, row %zu (refit %.4g, Heitz %.4g)\n",
                 better, n, much_worse, worst_ratio, worst_at % 64, worst_at / 64, mine[worst_at], heitz[worst_at]);
     std::printf("  more than twice Heitz's with a floor of 1e-2: %zu texels\n", much_worse_1e2);
+    std::printf("  above Heitz's by more than 0.05 of n0 (roughness index, row: refit, Heitz):");
+    for (std::size_t k = 0; k < n; ++k)
+        if (mine[k] - heitz[k] > 5e-2) std::printf(" (%zu, %zu: %.3g, %.3g)", k % 64, k / 64, mine[k], heitz[k]);
+    std::printf("\n");
+    std::printf("  refit error above Heitz's by more than 0.01 of n0 at %zu texels, by more than 0.05 at %zu; "
+                "largest excess %.4g at roughness index %zu, row %zu (refit %.4g, Heitz %.4g)\n",
+                excess_1e2, excess_5e2, worst_excess, excess_at % 64, excess_at / 64, mine[excess_at], heitz[excess_at]);
     std::printf("  Heitz's matrices with the exact n0: median %.4g, worst %.4g; refit lower at %zu, "
                 "more than twice (floor 1e-3) at %zu\n",
                 quantile(heitz_exact, 0.5), quantile(heitz_exact, 1.0), better_exact, much_worse_exact);
