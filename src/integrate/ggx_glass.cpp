@@ -586,7 +586,7 @@ struct PsiIntegrand {
     void batch(const double* u, std::array<double, 1>* y, int n) const {
         if (!(layer > 0.0)) return kernel_nodes(k, u, y, n);
         constexpr int kMax = 31;  // the largest panel
-        std::array<double, kMax> w, slope;
+        std::array<double, kMax> w{}, slope{};  // zeroed: GCC cannot see that the loop fills what kernel_nodes reads
         PsiConstants kw = k;
         kw.w0 = 0.0;
         kw.wl = 1.0;
