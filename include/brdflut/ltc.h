@@ -157,8 +157,9 @@ LtcLobe ltc_table_lobe(const std::string& id, double roughness, double mu,
 struct LtcFitOptions {
     int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
     int azimuth_nodes = 16;  // rays about the lobe's peak on [0, pi]
-    // Of each exact light integral of the error report, relative to n0 (the
-    // light errors that matter are 1e-3 of n0 and more).
+    // Of each exact light integral of the error report and of the fit's
+    // light term (ltc_fit_light_bank), relative to n0 (the light errors
+    // that matter are 1e-3 of n0 and more).
     double light_tolerance = 1e-5;
 };
 // Options for a quality (draft, standard, reference).
@@ -168,7 +169,7 @@ struct LtcFit {
     LtcInverse minv;           // normalized by the middle element
     double n0 = 0, n1 = 0;     // ltc_norms: int f cos, int f (1 - v.h)^5 cos (GGX; 0 otherwise)
     double n0_error = 0, n1_error = 0;
-    double objective = 0;      // the fit's objective (Heitz's measure + 0.3 x triangular discrimination; ltc_fit.cpp)
+    double objective = 0;      // the fit's objective (Heitz's measure + 0.3 x triangular discrimination + the light term near grazing; ltc_fit.cpp)
     double below_horizon = 0;  // LTC mass below the horizon (of 1)
     std::array<double, 4> params{};  // the optimizer's (theta, ln m11, ln m22, m13 / m11)
     int evaluations = 0;
@@ -212,6 +213,19 @@ struct LtcLight {
 };
 std::vector<LtcLight> ltc_light_bank(double mu_o);
 inline constexpr std::size_t kLtcLightCount = 10;
+
+// The second bank, of eight square lights, that the fit's objective holds
+// the LTC's light to near grazing view (mu_o < 0.4, src/integrate/ltc_fit.cpp);
+// not the report's bank: squares of 3, 10 and 25 degrees on the mirror
+// direction, 15 degrees at 20 degrees from it toward the view, 10 degrees
+// at 15 degrees beyond it (below the horizon at grazing view), 20 degrees at
+// 120 degrees in azimuth, 12 degrees at the horizon at 160 degrees, and 35
+// degrees at 31 degrees from the normal toward the view.
+std::vector<LtcLight> ltc_fit_light_bank(double mu_o);
+// The light term's weight: kLtcFitLightWeight (1 - mu_o / kLtcFitLightMu)^2
+// below kLtcFitLightMu, 0 above (src/integrate/ltc_fit.cpp says why).
+inline constexpr double kLtcFitLightWeight = 3.0;
+inline constexpr double kLtcFitLightMu = 0.4;
 
 // The exact integral of the lobe over each light (the part above the
 // horizon), by adaptive quadrature over the polygon; abs_tol per light.

@@ -8,6 +8,7 @@
 //   divided by its m22, as _m00_m02_m11_m20 of the transpose)
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -145,6 +146,12 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+std::string number_text(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return b;
+}
+
 std::string rule(LtcLobeKind kind) {
     const char* norms = kind == LtcLobeKind::ggx             ? "n0, n1 by the ggx_dfg quadrature"
                         : kind == LtcLobeKind::charlie_sheen ? "n0 by the sheen_charlie_albedo quadrature"
@@ -154,8 +161,12 @@ std::string rule(LtcLobeKind kind) {
                "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
                "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure) + "
                "0.3 int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every polygon's light "
-               "error), by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's ") +
-           (kind == LtcLobeKind::ggx ? "peak" : "normal") + ", split at the horizon; " + norms;
+               "error), both by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's ") +
+           (kind == LtcLobeKind::ggx ? "peak" : "normal") +
+           ", split at the horizon; + " + number_text(kLtcFitLightWeight) + " max(0, 1 - mu / " +
+           number_text(kLtcFitLightMu) + ")^2 times the sum of squared differences of the "
+           "LTC's light (closed form) and the lobe's (exact polygon quadrature to light_tolerance) over the "
+           "eight lights of ltc_fit_light_bank; " + norms;
 }
 
 const char* kNormRule = "no fit: exact integrals (n0, n1) and the closed-form sphere form factor";
