@@ -140,9 +140,19 @@ int main(int argc, char** argv) {
                 "worst ratio %.3g at roughness index %zu, row %zu (refit %.4g, Heitz %.4g)\n",
                 better, n, much_worse, worst_ratio, worst_at % 64, worst_at / 64, mine[worst_at], heitz[worst_at]);
     std::printf("  more than twice Heitz's with a floor of 1e-2: %zu texels\n", much_worse_1e2);
-    std::printf("  above Heitz's by more than 0.05 of n0 (roughness index, row: refit, Heitz):");
+    std::printf("  above Heitz's by more than 0.01 of n0 (roughness index, row: refit, Heitz):");
     for (std::size_t k = 0; k < n; ++k)
-        if (mine[k] - heitz[k] > 5e-2) std::printf(" (%zu, %zu: %.3g, %.3g)", k % 64, k / 64, mine[k], heitz[k]);
+        if (mine[k] - heitz[k] > 1e-2) std::printf(" (%zu, %zu: %.3g, %.3g)", k % 64, k / 64, mine[k], heitz[k]);
+    std::printf("\n");
+    std::printf("  more than twice Heitz's (floor 1e-3), texels per row (row: count):");
+    for (std::size_t row = 0; row < 64; ++row) {
+        std::size_t c = 0;
+        for (std::size_t a = 0; a < 64; ++a) {
+            const std::size_t k = 64 * row + a;
+            c += mine[k] / std::max(heitz[k], 1e-3) > 2.0;
+        }
+        if (c > 0) std::printf(" %zu: %zu", row, c);
+    }
     std::printf("\n");
     std::printf("  refit error above Heitz's by more than 0.01 of n0 at %zu texels, by more than 0.05 at %zu; "
                 "largest excess %.4g at roughness index %zu, row %zu (refit %.4g, Heitz %.4g)\n",
