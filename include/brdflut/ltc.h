@@ -169,7 +169,7 @@ struct LtcFit {
     LtcInverse minv;           // normalized by the middle element
     double n0 = 0, n1 = 0;     // ltc_norms: int f cos, int f (1 - v.h)^5 cos (GGX; 0 otherwise)
     double n0_error = 0, n1_error = 0;
-    double objective = 0;      // the fit's objective (Heitz's measure + 0.3 x triangular discrimination + the light term near grazing; ltc_fit.cpp)
+    double objective = 0;      // the fit's objective (Heitz's measure, + 0.3 x triangular discrimination for sheen and EON, + the light term near grazing; ltc_fit.cpp)
     double below_horizon = 0;  // LTC mass below the horizon (of 1)
     std::array<double, 4> params{};  // the optimizer's (theta, ln m11, ln m22, m13 / m11)
     int evaluations = 0;

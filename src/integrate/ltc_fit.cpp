@@ -30,10 +30,10 @@
 //     about the normal came out tilted.
 //  3. The objective: Heitz's error measure, int |p - D|^3 / (p + D) dw
 //     / int p^2 dw over the sphere (p = 0 below the horizon, so LTC mass
-//     there costs), by quadrature where Heitz samples it, plus 0.3 times
-//     the triangular discrimination int (p - D)^2 / (p + D) dw, which
-//     bounds the integrated-light error of every polygon (objective()
-//     says why and how it is weighted). (The relative L3 error,
+//     there costs), by quadrature where Heitz samples it, plus (for the
+//     wide lobes, sheen and EON) 0.3 times the triangular discrimination
+//     int (p - D)^2 / (p + D) dw, which bounds the integrated-light error
+//     of every polygon (objective() says why and how it is weighted). (The relative L3 error,
 //     int |p - D|^3 / int p^3, reported for every texel, gave larger
 //     integrated-light errors when used as the objective.) Near grazing
 //     view (mu_o < 0.4) a third term holds the LTC's light to the lobe's
@@ -88,6 +88,7 @@ struct SphereGrid {
     std::vector<double> x, y, z, w, p;
     double p3 = 0.0;  // int p^3
     double p2 = 0.0;
+    double mass_weight = 0.0;  // of the triangular discrimination in the objective (mass_weight_of)
 
     std::size_t size() const { return x.size(); }
 };
@@ -351,27 +352,29 @@ double initial_scale(const LtcLobe& lobe, double half_angle) {
 // kLtcFitLightMu, 0 above (the ramp and its slope continuous, so that the
 // fits do not step where it starts). Near grazing view the lobe is cut by
 // the horizon under its peak, and a light there that straddles the horizon
-// receives the LTC's mass on both sides of it (a shader clips the polygon
-// in the cosine's frame only) but the lobe's only above it: the density
-// terms see that mass but weigh it lightly, and the light of the peak came
-// out up to 0.19 of n0 off. The term holds the LTC's light to the lobe's
-// over a bank of eight lights of its own (ltc_fit_light_bank, not the
-// report's bank). Measured on the 64x64 GGX table against Heitz's
-// (bench/RESULTS.md): without the term the refit's light error was above
-// his by more than 0.05 of n0 at 9 texels of the last row, by 0.105 at
-// most; with it at none, by 0.039 at most, the median 0.0103 as before.
-// Weight 1 left 2 texels above by 0.05; weight 10 lowered the largest
-// excess to 0.032 but tripled the error at the roughest grazing texel; the
-// term over the whole table (weight 1 at every mu) moved the median to
-// 0.0109. The bank's overhead light sits 31 degrees toward the view: at
-// the normal, or at 17 degrees, it doubled to tripled the error of the roughest
-// grazing texels (its placement was chosen by the report's figures of the
-// last row, among six).
+// receives the LTC's mass on both sides of it (a shader clips the polygon in
+// the cosine's frame only) but the lobe's only above it: the density terms
+// see that mass but weigh it lightly, and the light of the peak came out up
+// to 0.19 of n0 off. The term holds the LTC's light to the lobe's over a
+// bank of eight lights of its own (ltc_fit_light_bank, not the report's
+// bank). Measured on the 64x64 GGX table against Heitz's (bench/RESULTS.md):
+// without the term the refit's light error was above his by more than 0.05
+// of n0 at 9 texels of the last row, by 0.105 at most; with it at none, by
+// 0.028 at most, the median 0.0103 as before. (The variants, measured with
+// the triangular discrimination at 0.3 in the objective too,
+// mass_weight_of:) weight 1 left 2 texels above by 0.05; weight 10 lowered
+// the largest excess to 0.032 but tripled the error at the roughest grazing
+// texel; the term over the whole table (weight 1 at every mu) moved the
+// median to 0.0109. The bank's overhead light sits 31 degrees toward the
+// view: at the normal, or at 17 degrees, it doubled to tripled the error of
+// the roughest grazing texels (its placement was chosen by the report's
+// figures of the last row, among six).
 double light_weight_of(double mu) {
     const double r = std::max(0.0, 1.0 - mu / kLtcFitLightMu);
     return kLtcFitLightWeight * r * r;
 }
 double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& light, double abs_tol);
+double mass_weight_of(const LtcLobe& lobe);
 
 Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth, double light_tolerance = -1.0) {
     Setup s;
@@ -387,6 +390,7 @@ Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth, double
     // neighbouring texels at roughness 0.1 to 0.2 by up to 10 %).
     if (!lobe.peaks_near_mirror()) radial += radial / 2;
     s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
+    s.grid.mass_weight = mass_weight_of(lobe);
     if (light_tolerance > 0.0) {
         s.light_weight = light_weight_of(lobe.mu_o);
         if (s.light_weight > 0.0) {
@@ -412,7 +416,7 @@ inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv,
 // of by sampling, plus a multiple of the triangular discrimination T of the
 // two densities,
 //   J = int |p - D|^3 / (p + D) dw / int p^2 dw + w T,
-//   T = int (p - D)^2 / (p + D) dw,   w = kMassWeight.
+//   T = int (p - D)^2 / (p + D) dw,   w = mass_weight_of(lobe).
 // T bounds the integrated-light error of every polygon:
 // the LTC's light is n0 times its mass in the polygon and the lobe's n0
 // times p's, and the largest difference of two densities' masses over any
@@ -426,15 +430,22 @@ inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv,
 // LTC mass anywhere outside the lobe counts, whether or not a node of the
 // grid falls on it. Both terms are smooth in the parameters (an L1 term,
 // with its kink at p = D inside the panels, made the fitted table noisy).
-// The weight, measured on the 64x64 table: the largest integrated-light
-// error is 0.36 of n0 with Heitz's measure alone, 0.19 at w = 0.3, 0.18 at
-// w = 1 and 0.28 at w = 0.1. The minima of the two terms part in the middle
-// of the table, and the fitted coefficients step from one to the other
-// along a line of texels: second differences of the stored coefficients
-// between neighbours above 0.03 away from the last three rows at no texel
-// with Heitz's measure alone, at 18 (up to 0.044) at w = 0.3 and at 33 (up
-// to 0.056) at w = 1.
-constexpr double kMassWeight = 0.3;
+// The weight: 0.3 for the wide lobes (sheen, EON), 0 for GGX. Measured on
+// the 64x64 GGX table before the light term (fit_objective) existed, the
+// largest integrated-light error was 0.36 of n0 with Heitz's measure alone,
+// 0.19 at w = 0.3, 0.18 at w = 1 and 0.28 at w = 0.1, all of it at grazing
+// view. With the light term there, T's weight only costs: at w = 0.3, 0.1,
+// 0.03 and 0 the largest light error is 0.158, 0.150, 0.146 and 0.144, the
+// texels above twice Heitz's error (floor 1e-3) 67, 63, 53 and 32, the
+// relative L3 median 0.041, 0.039, 0.036 and 0.034; and the minima of the
+// two terms part in the middle of the table, where the fitted coefficients
+// stepped from one to the other along a line of texels (the largest second
+// difference between neighbours, as a fraction of max(1, |coefficient|),
+// outside the last row: 0.047 at w = 0.3, 0.018 at w = 0). For the sheen
+// T still pays: its light error median is 0.028 at w = 0.3 and 0.031 at
+// w = 0, its largest 0.068 and 0.073 (EON 0.0043 and 0.0046).
+constexpr double kWideLobeMassWeight = 0.3;
+double mass_weight_of(const LtcLobe& lobe) { return lobe.peaks_near_mirror() ? 0.0 : kWideLobeMassWeight; }
 
 // The three sums of the objective over the grid, node i in lane i % 4 and
 // the lanes added as (l0 + l1) + (l2 + l3): the SSE2 path takes two lanes
@@ -521,7 +532,7 @@ ObjectiveSums objective_sums(const SphereGrid& g, const Mat3& minv, double det_o
 
 double objective(const SphereGrid& g, const Mat3& minv) {
     const ObjectiveSums s = objective_sums(g, minv, std::abs(minv.det()) / kPi);
-    return s.heitz / g.p2 + kMassWeight * (s.tri + std::max(0.0, 1.0 - s.inside));
+    return s.heitz / g.p2 + g.mass_weight * (s.tri + std::max(0.0, 1.0 - s.inside));
 }
 
 double fit_objective(const Setup& s, const Mat3& minv) {

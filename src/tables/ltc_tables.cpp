@@ -159,9 +159,11 @@ std::string rule(LtcLobeKind kind) {
     return std::string(
                "per texel: Nelder-Mead in double on all four parameters of a y-symmetric LTC from an initial "
                "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
-               "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure) + "
-               "0.3 int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every polygon's light "
-               "error), both by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's ") +
+               "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure)") +
+           (kind == LtcLobeKind::ggx ? ""
+                                     : " + 0.3 int (p - D)^2 / (p + D) dw (the triangular discrimination, which "
+                                       "bounds every polygon's light error)") +
+           ", by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's " +
            (kind == LtcLobeKind::ggx ? "peak" : "normal") +
            ", split at the horizon; + " + number_text(kLtcFitLightWeight) + " max(0, 1 - mu / " +
            number_text(kLtcFitLightMu) + ")^2 times the sum of squared differences of the "
