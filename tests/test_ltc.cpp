@@ -307,7 +307,7 @@ TEST(LtcHeitz, RefitGivesLessIntegratedLightErrorThanThePublishedTable) {
     const std::vector<double> t2 = read_fixture("three_ltc_2.txt");
     ASSERT_EQ(t1.size(), 64u * 64u * 4u);
     int wins = 0, n = 0;
-    double worst_ratio = 0.0, mine_worst = 0.0, heitz_worst = 0.0;
+    double worst_ratio = 0.0, mine_worst = 0.0, heitz_worst = 0.0, worst_excess = 0.0;
     for (int t = 0; t < 64; t += 9)
         for (int a = 0; a < 64; a += 9) {
             const double mu = mu_of(t), alpha = alpha_of(a);
@@ -320,12 +320,17 @@ TEST(LtcHeitz, RefitGivesLessIntegratedLightErrorThanThePublishedTable) {
             ++n;
             if (mine.light_max <= pub.light_max) ++wins;
             worst_ratio = std::max(worst_ratio, mine.light_max / std::max(pub.light_max, 1e-3));
+            worst_excess = std::max(worst_excess, mine.light_max - pub.light_max);
             mine_worst = std::max(mine_worst, mine.light_max);
             heitz_worst = std::max(heitz_worst, pub.light_max);
         }
     EXPECT_GE(wins, n * 3 / 4) << wins << " of " << n;
     EXPECT_LT(worst_ratio, 3.0);
     EXPECT_LT(mine_worst, heitz_worst);
+    // Nowhere above Heitz's error by more than 0.05 of n0 (the largest excess
+    // here is about 0.02, at roughness indices 9 and 54 of the last row;
+    // without the light term in the fit it was 0.10 and 0.06 there).
+    EXPECT_LT(worst_excess, 0.05);
 }
 
 TEST(LtcTables, ByteIdenticalForOneTwoAndAllThreads) {
