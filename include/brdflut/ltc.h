@@ -222,6 +222,11 @@ inline constexpr std::size_t kLtcLightCount = 10;
 // 120 degrees in azimuth, 12 degrees at the horizon at 160 degrees, and 35
 // degrees at 31 degrees from the normal toward the view.
 std::vector<LtcLight> ltc_fit_light_bank(double mu_o);
+// The weight of the triangular discrimination in a lobe's objective:
+// kLtcWideLobeMassWeight for the sheen and EON, 0 for GGX, whose grazing
+// rows the light term covers (src/integrate/ltc_fit.cpp, objective()).
+inline constexpr double kLtcWideLobeMassWeight = 0.3;
+double ltc_mass_weight(LtcLobeKind kind);
 // The light term's weight: kLtcFitLightWeight (1 - mu_o / kLtcFitLightMu)^2
 // below kLtcFitLightMu, 0 above (src/integrate/ltc_fit.cpp says why).
 inline constexpr double kLtcFitLightWeight = 3.0;

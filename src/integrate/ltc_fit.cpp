@@ -33,9 +33,10 @@
 //     there costs), by quadrature where Heitz samples it, plus (for the
 //     wide lobes, sheen and EON) 0.3 times the triangular discrimination
 //     int (p - D)^2 / (p + D) dw, which bounds the integrated-light error
-//     of every polygon (objective() says why and how it is weighted). (The relative L3 error,
-//     int |p - D|^3 / int p^3, reported for every texel, gave larger
-//     integrated-light errors when used as the objective.) Near grazing
+//     of every polygon (objective() says why and how it is weighted).
+//     (The relative L3 error, int |p - D|^3 / int p^3, reported for
+//     every texel, gave larger integrated-light errors when used as the
+//     objective.) Near grazing
 //     view (mu_o < 0.4) a third term holds the LTC's light to the lobe's
 //     over a bank of polygon lights (light_weight_of says why).
 //  4. The parameters: M = R(theta) [[m11, 0, m13], [0, m22, 0], [0, 0, 1]]
@@ -88,7 +89,7 @@ struct SphereGrid {
     std::vector<double> x, y, z, w, p;
     double p3 = 0.0;  // int p^3
     double p2 = 0.0;
-    double mass_weight = 0.0;  // of the triangular discrimination in the objective (mass_weight_of)
+    double mass_weight = 0.0;  // of the triangular discrimination in the objective (ltc_mass_weight)
 
     std::size_t size() const { return x.size(); }
 };
@@ -362,7 +363,7 @@ double initial_scale(const LtcLobe& lobe, double half_angle) {
 // of n0 at 9 texels of the last row, by 0.105 at most; with it at none, by
 // 0.028 at most, the median 0.0103 as before. (The variants, measured with
 // the triangular discrimination at 0.3 in the objective too,
-// mass_weight_of:) weight 1 left 2 texels above by 0.05; weight 10 lowered
+// ltc_mass_weight:) weight 1 left 2 texels above by 0.05; weight 10 lowered
 // the largest excess to 0.032 but tripled the error at the roughest grazing
 // texel; the term over the whole table (weight 1 at every mu) moved the
 // median to 0.0109. The bank's overhead light sits 31 degrees toward the
@@ -374,9 +375,10 @@ double light_weight_of(double mu) {
     return kLtcFitLightWeight * r * r;
 }
 double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& light, double abs_tol);
-double mass_weight_of(const LtcLobe& lobe);
 
-Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth, double light_tolerance = -1.0) {
+// The grid, frame and initial guess of a texel: what the fit and the error
+// figures share (make_fit_setup adds the fit's light term).
+Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth) {
     Setup s;
     const LobeShape shape = lobe_shape(lobe, n0);
     s.frame = shape.frame;
@@ -390,14 +392,20 @@ Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth, double
     // neighbouring texels at roughness 0.1 to 0.2 by up to 10 %).
     if (!lobe.peaks_near_mirror()) radial += radial / 2;
     s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
-    s.grid.mass_weight = mass_weight_of(lobe);
-    if (light_tolerance > 0.0) {
-        s.light_weight = light_weight_of(lobe.mu_o);
-        if (s.light_weight > 0.0) {
-            s.lights = ltc_fit_light_bank(lobe.mu_o);
-            for (const LtcLight& l : s.lights)
-                s.light_mass.push_back(polygon_light(lobe, s.frame, l, light_tolerance * n0) / n0);
-        }
+    s.grid.mass_weight = ltc_mass_weight(lobe.kind);
+    return s;
+}
+
+// The setup of the fit's objective (fit_objective): make_setup at the
+// options' grid, with the light term's weight and the lobe's exact light
+// over the fit bank where the weight is not 0.
+Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
+    Setup s = make_setup(lobe, n0, opt.radial_nodes, opt.azimuth_nodes);
+    s.light_weight = light_weight_of(lobe.mu_o);
+    if (s.light_weight > 0.0) {
+        s.lights = ltc_fit_light_bank(lobe.mu_o);
+        for (const LtcLight& l : s.lights)
+            s.light_mass.push_back(polygon_light(lobe, s.frame, l, opt.light_tolerance * n0) / n0);
     }
     return s;
 }
@@ -416,7 +424,7 @@ inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv,
 // of by sampling, plus a multiple of the triangular discrimination T of the
 // two densities,
 //   J = int |p - D|^3 / (p + D) dw / int p^2 dw + w T,
-//   T = int (p - D)^2 / (p + D) dw,   w = mass_weight_of(lobe).
+//   T = int (p - D)^2 / (p + D) dw,   w = ltc_mass_weight(lobe.kind).
 // T bounds the integrated-light error of every polygon:
 // the LTC's light is n0 times its mass in the polygon and the lobe's n0
 // times p's, and the largest difference of two densities' masses over any
@@ -444,8 +452,6 @@ inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv,
 // outside the last row: 0.047 at w = 0.3, 0.018 at w = 0). For the sheen
 // T still pays: its light error median is 0.028 at w = 0.3 and 0.031 at
 // w = 0, its largest 0.068 and 0.073 (EON 0.0043 and 0.0046).
-constexpr double kWideLobeMassWeight = 0.3;
-double mass_weight_of(const LtcLobe& lobe) { return lobe.peaks_near_mirror() ? 0.0 : kWideLobeMassWeight; }
 
 // The three sums of the objective over the grid, node i in lane i % 4 and
 // the lanes added as (l0 + l1) + (l2 + l3): the SSE2 path takes two lanes
@@ -648,6 +654,8 @@ std::string to_string(LtcLobeKind kind) {
     return "unknown";
 }
 
+double ltc_mass_weight(LtcLobeKind kind) { return kind == LtcLobeKind::ggx ? 0.0 : kLtcWideLobeMassWeight; }
+
 namespace {
 double clamp_param(LtcLobeKind kind, double p) {
     switch (kind) {
@@ -777,12 +785,12 @@ LtcInverse ltc_inverse_from_params(const std::array<double, 4>& p) {
 }
 
 double ltc_objective(const LtcLobe& lobe, const std::array<double, 4>& params, const LtcFitOptions& opt) {
-    const Setup s = make_setup(lobe, ltc_norms(lobe).n0, opt.radial_nodes, opt.azimuth_nodes, opt.light_tolerance);
+    const Setup s = make_fit_setup(lobe, ltc_norms(lobe).n0, opt);
     return fit_objective(s, ltc_inverse_from_params(params).matrix());
 }
 
 double ltc_local_minimum_drop(const LtcLobe& lobe, const LtcFit& fit, const LtcFitOptions& opt) {
-    const Setup s = make_setup(lobe, ltc_norms(lobe).n0, opt.radial_nodes, opt.azimuth_nodes, opt.light_tolerance);
+    const Setup s = make_fit_setup(lobe, ltc_norms(lobe).n0, opt);
     const double j0 = fit_objective(s, ltc_inverse_from_params(fit.params).matrix());
     // Steps relative to each parameter's scale: theta in units of the lobe's width.
     const double width = std::min(std::exp(fit.params[1]), 1.0);
@@ -813,7 +821,7 @@ LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
     out.n1 = norms.n1;
     out.n0_error = norms.n0_error;
     out.n1_error = norms.n1_error;
-    const Setup s = make_setup(lobe, out.n0, opt.radial_nodes, opt.azimuth_nodes, opt.light_tolerance);
+    const Setup s = make_fit_setup(lobe, out.n0, opt);
     auto f = [&](const std::array<double, 4>& p) { return fit_objective(s, ltc_inverse_from_params(p).matrix()); };
 
     int evals = 0;

@@ -160,9 +160,11 @@ std::string rule(LtcLobeKind kind) {
                "per texel: Nelder-Mead in double on all four parameters of a y-symmetric LTC from an initial "
                "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
                "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure)") +
-           (kind == LtcLobeKind::ggx ? ""
-                                     : " + 0.3 int (p - D)^2 / (p + D) dw (the triangular discrimination, which "
-                                       "bounds every polygon's light error)") +
+           (ltc_mass_weight(kind) == 0.0
+                ? std::string()
+                : " + " + number_text(ltc_mass_weight(kind)) +
+                      " int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every polygon's "
+                      "light error)") +
            ", by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's " +
            (kind == LtcLobeKind::ggx ? "peak" : "normal") +
            ", split at the horizon; + " + number_text(kLtcFitLightWeight) + " max(0, 1 - mu / " +
