@@ -467,5 +467,39 @@ TEST(LtcVerify, ClosedFormAndLocalMinimumChecksPass) {
         for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
     }
 }
+// The fit's own bank (ltc_fit_light_bank) is as its header describes: eight
+// squares of unit directions, none of them a light of the report's bank; at
+// grazing view the peak lights straddle the horizon (the case the light
+// term is for) and the light beyond the mirror direction lies below it.
+TEST(LtcLights, FitBankIsItsOwnAndStraddlesTheHorizonAtGrazingView) {
+    for (double mu : {kLtcMinMu, 0.2, 0.39}) {
+        const std::vector<LtcLight> fit = ltc_fit_light_bank(mu), report = ltc_light_bank(mu);
+        ASSERT_EQ(fit.size(), 8u);
+        for (const LtcLight& l : fit) {
+            for (const Vec3& v : l.vertices) EXPECT_NEAR(dot(v, v), 1.0, 1e-12) << l.name;
+            for (const LtcLight& r : report) {
+                double d = 0.0;
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const Vec3 e{l.vertices[i].x - r.vertices[i].x, l.vertices[i].y - r.vertices[i].y,
+                                 l.vertices[i].z - r.vertices[i].z};
+                    d = std::max(d, dot(e, e));
+                }
+                EXPECT_GT(d, 1e-6) << l.name << " is " << r.name;
+            }
+        }
+    }
+    const std::vector<LtcLight> grazing = ltc_fit_light_bank(kLtcMinMu);
+    for (std::size_t k = 0; k < 3; ++k) {  // the peak lights, 3, 10 and 25 degrees
+        double lo = 1.0, hi = -1.0;
+        for (const Vec3& v : grazing[k].vertices) {
+            lo = std::min(lo, v.z);
+            hi = std::max(hi, v.z);
+        }
+        EXPECT_LT(lo, 0.0) << grazing[k].name;
+        EXPECT_GT(hi, 0.0) << grazing[k].name;
+    }
+    for (const Vec3& v : grazing[4].vertices) EXPECT_LT(v.z, 0.0) << grazing[4].name;
+}
+
 }  // namespace
 }  // namespace brdflut
