@@ -9,22 +9,19 @@
 
 namespace brdflut {
 
-const std::vector<TableDefinition>& catalogue() {
-    static const std::vector<TableDefinition> all = [] {
-        std::vector<TableDefinition> v;
-        register_ggx_tables(v);
-        register_fresnel_tables(v);
-        register_dipole_tables(v);
-        register_disney_tables(v);
-        register_oren_nayar_tables(v);
-        register_sheen_tables(v);
-        register_glass_tables(v);
-        register_preset_tables(v);
-        register_ltc_tables(v);
-        return v;
+const FamilyEntries& families() {
+    static const FamilyEntries all = [] {
+        FamilyEntries f;
+        for (auto* add : {register_ggx_family, register_fresnel_family, register_dipole_family,
+                          register_disney_family, register_oren_nayar_family, register_sheen_family,
+                          register_glass_family, register_preset_family, register_ltc_family})
+            add(f);
+        return f;
     }();
     return all;
 }
+
+const std::vector<TableDefinition>& catalogue() { return families().tables; }
 
 const TableDefinition& find_table(const std::string& id) {
     for (const TableDefinition& d : catalogue())

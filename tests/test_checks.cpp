@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
+#include "brdflut/furnace.h"
 #include "brdflut/generate.h"
 #include "brdflut/lut.h"
 #include "brdflut/verify.h"
@@ -49,20 +51,48 @@ TEST(Verify, TexelSpreadIncludesTheGridCorners) {
     EXPECT_TRUE(normal_roughest);
 }
 
-TEST(Verify, AWrongTableFailsItsClosedFormCheck) {
-    // A check that cannot fail proves nothing: feed it a wrong evaluator.
-    struct Wrong : TexelEvaluator {
+TEST(Verify, EveryTableHasAnIndependentCheckThatAWrongTableFails) {
+    // A table whose every channel is 0.5 everywhere: each table of the
+    // catalogue has at least one check of its own (not Monte Carlo, which
+    // verify adds for the tables that have it), and one of them fails it.
+    class Wrong final : public TexelEvaluator {
         TexelValue evaluate(const double*, std::uint64_t) const override {
             TexelValue v;
             v.value = {0.5, 0.5, 0.5, 0.5};
             return v;
         }
     } wrong;
-    for (const std::string id : {"ggx_albedo", "fresnel_dielectric", "disney_diffuse_albedo", "eon_albedo"}) {
-        const auto checks = closed_form_checks(id);
-        ASSERT_FALSE(checks.empty()) << id;
-        for (const auto& c : checks) EXPECT_GT(c.run(wrong).first, c.tolerance) << id << ": " << c.name;
+    for (const TableDefinition& d : catalogue()) {
+        ASSERT_FALSE(d.checks.empty()) << d.id << " has no check of its own";
+        EXPECT_EQ(&closed_form_checks(d.id), &d.checks) << d.id;
+        bool caught = false;
+        for (const ClosedFormCheck& c : d.checks) {
+            const auto [err, where] = c.run(wrong);
+            caught = caught || !(err <= c.tolerance);
+        }
+        EXPECT_TRUE(caught) << d.id << ": no check fails a table of 0.5 everywhere";
     }
+}
+
+TEST(Catalogue, IdsAreUniqueAndPresetsAndFurnaceModelsNameItsTables) {
+    std::set<std::string> ids;
+    for (const TableDefinition& d : catalogue()) {
+        EXPECT_TRUE(ids.insert(d.id).second) << "duplicate id " << d.id;
+        if (!d.preset.empty()) {
+            EXPECT_NO_THROW(find_preset(d.preset)) << d.id;
+        }
+    }
+    for (const Preset& p : presets()) EXPECT_FALSE(preset_tables(p.name).empty()) << p.name;
+    std::set<std::string> models;
+    for (const FurnaceModel& m : furnace_models()) {
+        EXPECT_TRUE(models.insert(m.id).second) << "duplicate furnace model " << m.id;
+        ASSERT_TRUE(ids.count(m.albedo_table)) << m.id << ": " << m.albedo_table;
+        EXPECT_LT(m.channel, static_cast<int>(find_table(m.albedo_table).channels.size())) << m.id;
+        if (!m.average_table.empty()) {
+            EXPECT_TRUE(ids.count(m.average_table)) << m.id << ": " << m.average_table;
+        }
+    }
+    EXPECT_THROW(closed_form_checks("no_such_table"), Error);
 }
 
 TEST(Compare, ABrdflutFileMatchesWithinItsErrorBound) {

@@ -42,6 +42,20 @@ struct TexelValue {
     long long evaluations = 0;
 };
 
+class TexelEvaluator;
+
+// An independent check of a table: its values against a closed form, a limit
+// or a second route to the same integral (never Monte Carlo, which verify
+// runs for every table that has it, and never the table against itself).
+// run() evaluates the table's own evaluator (default settings) and returns
+// the largest absolute error and where it occurred; the check passes when
+// that error is finite and at most `tolerance`.
+struct ClosedFormCheck {
+    std::string name;
+    double tolerance;
+    std::function<std::pair<double, std::string>(const TexelEvaluator&)> run;
+};
+
 class TexelEvaluator {
 public:
     virtual ~TexelEvaluator() = default;
@@ -88,6 +102,9 @@ struct TableDefinition {
     std::array<std::string, 9> shader_matrix;
     // Validates settings (throws brdflut::Error) and builds the evaluator.
     std::function<PreparedTable(const TableSettings&)> prepare;
+    // The table's independent checks, which `brdflut verify` runs; every
+    // table of the catalogue has at least one (tests/test_checks.cpp).
+    std::vector<ClosedFormCheck> checks;
 };
 
 const std::vector<TableDefinition>& catalogue();

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "brdflut/math.h"
 #include "brdflut/quadrature.h"
 
 namespace brdflut {
@@ -25,6 +26,11 @@ enum class Lobe {
     eon,                // p = sigma in [0, 1]
 };
 std::string_view to_string(Lobe lobe);
+
+// The lobe's BRDF f(wo, wi; p) per unit base colour, evaluated pointwise
+// (disney.h, oren_nayar.h): the value the Monte Carlo route and the tables'
+// independent checks integrate.
+double lobe_brdf(Lobe lobe, const Vec3& wo, const Vec3& wi, double p);
 
 // Absolute tolerance of the quadrature at default settings.
 inline constexpr double kLobeAbsTolerance = 1e-9;

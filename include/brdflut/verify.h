@@ -21,17 +21,9 @@ struct CheckRow {
     std::string where;        // parameters of the worst point
 };
 
-// A check of a table's values against a closed form. run() evaluates the
-// table's own evaluator (default settings) and returns the largest absolute
-// error and where it occurred.
-struct ClosedFormCheck {
-    std::string name;
-    double tolerance;
-    std::function<std::pair<double, std::string>(const TexelEvaluator&)> run;
-};
-
-// The closed-form checks known for a table (possibly none).
-std::vector<ClosedFormCheck> closed_form_checks(const std::string& table_id);
+// The independent checks of a table (TableDefinition::checks); throws
+// brdflut::Error when the id is not in the catalogue.
+const std::vector<ClosedFormCheck>& closed_form_checks(const std::string& table_id);
 
 struct VerifyOptions {
     long long mc_samples = 100000;  // per texel for the Monte Carlo check

@@ -9,46 +9,10 @@
 #include "brdflut/exr.h"
 #include "brdflut/lut.h"
 #include "brdflut/quadrature.h"
+#include "tables/registry.h"
 
 namespace brdflut {
 namespace {
-
-// Allowed |E / E' - 1| of the compensated glass: the trilinear interpolation
-// error of the 16^3 table, 5.7e-2 at worst on a 32^2 grid (mu = 1/64, alpha =
-// 0.91), well below 1e-2 away from grazing view.
-constexpr double kGlassCompensationTolerance = 0.1;
-
-std::vector<FurnaceModel> build() {
-    const std::pair<std::string, std::string> hc{"visibility", "height_correlated"}, sep{"visibility", "separable"};
-    return {
-        {"ggx", "GGX single scattering, height-correlated Smith G2", "ggx_albedo", "ggx_albedo_avg", {hc}, false, false, 0},
-        {"ggx_separable", "GGX single scattering, separable Smith G1 G1", "ggx_albedo", "ggx_albedo_avg", {sep}, false, false, 0},
-        {"ggx_kulla_conty", "GGX (height-correlated) plus the Kulla-Conty multiple-scattering lobe", "ggx_albedo",
-         "ggx_albedo_avg", {hc}, true, true, 1e-4},
-        {"disney_diffuse", "Burley 2012 diffuse", "disney_diffuse_albedo", "disney_diffuse_albedo_avg", {}, false, false, 0},
-        {"disney_subsurface", "Burley 2012 subsurface (Hanrahan-Krueger-like)", "disney_subsurface_albedo",
-         "disney_subsurface_albedo_avg", {}, false, false, 0},
-        {"disney_sheen", "Burley 2012 sheen, per unit sheen weight", "disney_sheen_albedo", "", {}, false, false, 0},
-        {"disney_clearcoat", "Burley 2012 clearcoat (GTR1, F0 = 0.04), weight 1", "disney_clearcoat_albedo",
-         "disney_clearcoat_albedo_avg", {}, false, false, 0},
-        {"oren_nayar", "Oren-Nayar 1994, qualitative model", "oren_nayar_albedo", "oren_nayar_albedo_avg", {}, false, false, 0},
-        {"fujii_oren_nayar", "Fujii Oren-Nayar (OpenPBR normalization)", "fujii_oren_nayar_albedo",
-         "fujii_oren_nayar_albedo_avg", {}, false, false, 0},
-        {"eon", "EON, energy-preserving Oren-Nayar (Portsmouth et al. 2025)", "eon_albedo", "eon_albedo_avg", {}, false,
-         true, 1e-6},
-        {"ggx_glass", "GGX rough glass (Walter 2007) at n = 1.5 from outside: E_R + E_T, single scattering",
-         "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
-        {"ggx_glass_inside", "GGX rough glass at n = 1.5 from inside (eta = 1/n): E_R + E_T, single scattering",
-         "ggx_glass_albedo_inside", "ggx_glass_albedo_avg_inside", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
-        // The interpolation error of the 16^3 table peaks at grazing view
-        // and small roughness, where E(mu) turns fastest.
-        {"ggx_glass_compensated",
-         "GGX rough glass at n = 1.5 from outside, E scaled by 1 / E from the default 16^3 table (Cycles' "
-         "compensation of untinted glass)",
-         "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, true, kGlassCompensationTolerance, 2,
-         {{"ior", 1.5}}, true},
-    };
-}
 
 // The settings of a furnace table: the grid of the report (size points on
 // each free axis) or the table's default (size 0), the fixed axes at one
@@ -129,10 +93,7 @@ double ms_lobe_normalization(double alpha, Visibility vis) {
 
 }  // namespace
 
-const std::vector<FurnaceModel>& furnace_models() {
-    static const std::vector<FurnaceModel> all = build();
-    return all;
-}
+const std::vector<FurnaceModel>& furnace_models() { return families().furnace_models; }
 
 const FurnaceModel& find_furnace_model(const std::string& id) {
     for (const auto& m : furnace_models())

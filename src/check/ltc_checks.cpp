@@ -53,94 +53,78 @@ std::pair<double, std::string> metadata_maxima_error(const std::string& id) {
 }
 }  // namespace
 
-void add_ltc_checks(std::map<std::string, std::vector<ClosedFormCheck>>& m) {
-    using Result = std::pair<double, std::string>;
-    m["ltc_2"] = {
-        {"n0 at roughness 1 vs 1 - mu ln(1 + 1/mu) (height-correlated G2)", 1e-8,
-         [](const TexelEvaluator& e) {
-             Result r{0.0, ""};
-             for (double mu : {0.05, 0.25, 0.5, 0.75, 1.0}) {
-                 const double c[2] = {1.0, mu};
-                 const double err = std::abs(e.evaluate(c, 0).value[0] - (1.0 - mu * std::log1p(1.0 / mu)));
-                 if (err > r.first) r = {err, "at mu = " + std::to_string(mu)};
-             }
-             return r;
-         }},
-        {"sphere channel at len = 0 (cos_theta = 1) vs max(z, 0), z = 2 r - 1", 1e-15,
-         [](const TexelEvaluator& e) {
-             Result r{0.0, ""};
-             for (double rough : {0.0, 0.3, 0.5, 0.8, 1.0}) {
-                 const double c[2] = {rough, 1.0};
-                 const double err = std::abs(e.evaluate(c, 0).value[3] - std::max(2.0 * rough - 1.0, 0.0));
-                 if (err > r.first) r = {err, "at roughness = " + std::to_string(rough)};
-             }
-             return r;
-         }},
-    };
-    m["ltc_eon_norm"] = {
-        {"n0 vs 1 (EON conserves energy at rho = 1)", 1e-8,
-         [](const TexelEvaluator& e) {
-             Result r{0.0, ""};
-             for (double sigma : {0.0, 0.3, 0.7, 1.0})
-                 for (double mu : {1.0, 0.5, 0.05, 0.0}) {
-                     const double c[2] = {sigma, mu};
-                     const double err = std::abs(e.evaluate(c, 0).value[0] - 1.0);
-                     if (err > r.first || r.second.empty())
-                         r = {err, "at sigma = " + std::to_string(sigma) + ", mu = " + std::to_string(mu)};
-                 }
-             return r;
-         }},
-    };
-    m["ltc_sheen_charlie_norm"] = {
-        {"n0 at cos_theta = 1 vs 2^(1 - n/2) / (n + 2), n = 2 + 1/alpha", 1e-9,
-         [](const TexelEvaluator& e) {
-             Result r{0.0, ""};
-             for (double rough : {0.2, 0.5, 0.8, 1.0}) {
-                 const double c[2] = {rough, 1.0};
-                 const double n = 2.0 + 1.0 / (rough * rough);
-                 const double err = std::abs(e.evaluate(c, 0).value[0] - std::pow(2.0, 1.0 - 0.5 * n) / (n + 2.0));
-                 if (err > r.first || r.second.empty()) r = {err, "at roughness = " + std::to_string(rough)};
-             }
-             return r;
-         }},
-    };
-    // The fit at a spread of texels is a local minimum: no parameter moved
-    // by 1e-3 (theta by 1e-3 of the lobe's width) lowers the objective. The
-    // row is the relative drop (0 when none).
-    auto local_minimum = [](const std::string& id) {
-        return ClosedFormCheck{
-            "fit is a local minimum of its objective (relative drop under perturbation)", 1e-9,
-            [id](const TexelEvaluator& e) {
-                Result r{0.0, ""};
-                for (double rough : {0.1, 0.5, 0.9})
-                    for (double mu : {1.0, 0.5, 0.05}) {
-                        const double c[2] = {rough, mu};
-                        const TexelValue v = e.evaluate(c, 0);
-                        const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
-                        const LtcFit fit = fit_ltc(lobe);
-                        // The table holds this fit.
-                        const double drop =
-                            std::max(std::abs(v.value[0] - fit.minv.a) + std::abs(v.value[3] - fit.minv.d),
-                                     ltc_local_minimum_drop(lobe, fit));
-                        if (drop > r.first || r.second.empty()) {
-                            std::ostringstream s;
-                            s << "at " << (id == "ltc_eon" ? "sigma " : "roughness ") << rough << ", mu " << mu;
-                            r = {std::max(drop, 0.0), s.str()};
-                        }
+// The fit at a spread of texels is a local minimum: no parameter moved by
+// 1e-3 (theta by 1e-3 of the lobe's width) lowers the objective. The row is
+// the relative drop (0 when none).
+ClosedFormCheck ltc_local_minimum_check(const std::string& id, const std::string& parameter) {
+    return ClosedFormCheck{
+        "fit is a local minimum of its objective (relative drop under perturbation)", 1e-9,
+        [id, parameter](const TexelEvaluator& e) {
+            std::pair<double, std::string> r{0.0, ""};
+            for (double rough : {0.1, 0.5, 0.9})
+                for (double mu : {1.0, 0.5, 0.05}) {
+                    const double c[2] = {rough, mu};
+                    const TexelValue v = e.evaluate(c, 0);
+                    const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
+                    const LtcFit fit = fit_ltc(lobe);
+                    // The table holds this fit: its matrix, unpacked as a
+                    // shader unpacks it and scaled to a middle element of 1,
+                    // is the fit's.
+                    const Mat3 stored = stored_ltc_inverse(find_table(id), v.value.data());
+                    const Mat3 want = fit.minv.matrix();
+                    double held = 0.0;
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            held += std::abs(stored.m[i][j] / stored.m[1][1] - want.m[i][j]);
+                    if (!std::isfinite(held)) held = HUGE_VAL;
+                    const double drop = std::max(held, ltc_local_minimum_drop(lobe, fit));
+                    if (drop > r.first || r.second.empty()) {
+                        std::ostringstream s;
+                        s << "at " << parameter << " " << rough << ", mu " << mu;
+                        r = {std::max(drop, 0.0), s.str()};
                     }
-                return r;
-            }};
-    };
-    // The light errors differ by the exact light's own error, at most the
-    // metadata's tolerance per light (ltc_fit_options at default quality,
-    // the quality metadata_maxima_error generates at).
-    auto maxima = [](const std::string& id) {
-        return ClosedFormCheck{"metadata error maxima (light, L3, below horizon) vs recomputation",
-                               ltc_fit_options(1).light_tolerance,
-                               [id](const TexelEvaluator&) { return metadata_maxima_error(id); }};
-    };
-    for (const char* id : {"ltc_1", "ltc_sheen_charlie", "ltc_eon"}) m[id] = {local_minimum(id), maxima(id)};
-    m["hdrp_ltc_ggx"] = {maxima("hdrp_ltc_ggx")};
+                }
+            return r;
+        }};
+}
+
+// The light errors differ by the exact light's own error, at most the
+// metadata's tolerance per light (ltc_fit_options at default quality, the
+// quality metadata_maxima_error generates at).
+ClosedFormCheck ltc_metadata_maxima_check(const std::string& id) {
+    return ClosedFormCheck{"metadata error maxima (light, L3, below horizon) vs recomputation",
+                           ltc_fit_options(1).light_tolerance,
+                           [id](const TexelEvaluator&) { return metadata_maxima_error(id); }};
+}
+
+// An error report table's light errors at a spread of texels against the
+// report of the same fit with every exact light taken 1000 times finer: they
+// differ by the coarse lights' errors, at most the tolerance per light.
+ClosedFormCheck ltc_report_check(const std::string& id, const std::string& parameter) {
+    const LtcFitOptions opt = ltc_fit_options(1);
+    return ClosedFormCheck{
+        "light errors (largest, mean) vs the report with the exact light 1000 times finer", opt.light_tolerance,
+        [id, parameter, opt](const TexelEvaluator& e) {
+            LtcFitOptions fine = opt;
+            fine.light_tolerance = 1e-3 * opt.light_tolerance;
+            std::pair<double, std::string> r{0.0, ""};
+            for (double rough : {0.2, 0.8})
+                for (double mu : {0.9, 0.1}) {
+                    const double c[2] = {rough, mu};
+                    const TexelValue v = e.evaluate(c, 0);
+                    const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
+                    const LtcFit fit = fit_ltc(lobe, opt);
+                    const LtcTexelReport rep = ltc_texel_report(lobe, fit.minv.matrix(), fit.n0, fine);
+                    const double d = std::max(std::abs(v.value[2] - rep.light_max), std::abs(v.value[3] - rep.light_mean));
+                    if (!std::isfinite(d)) return std::pair<double, std::string>{HUGE_VAL, "not finite"};
+                    if (d > r.first || r.second.empty()) {
+                        std::ostringstream s;
+                        s << "at " << parameter << " " << rough << ", mu " << mu;
+                        r = {d, s.str()};
+                    }
+                }
+            return r;
+        }};
 }
 
 }  // namespace brdflut

@@ -16,6 +16,10 @@ std::string describe(const TableDefinition& def, const std::vector<double>& coor
 }
 }  // namespace
 
+const std::vector<ClosedFormCheck>& closed_form_checks(const std::string& table_id) {
+    return find_table(table_id).checks;
+}
+
 std::vector<std::vector<int>> verify_texels(const TableDefinition& def) {
     std::vector<std::vector<int>> out{{}};
     for (const AxisSpec& spec : def.axes) {
@@ -40,7 +44,7 @@ std::vector<CheckRow> verify_table(const TableDefinition& def, const VerifyOptio
     const TableSettings settings = default_settings(def);
     const PreparedTable quad = def.prepare(settings);
 
-    for (const ClosedFormCheck& c : closed_form_checks(def.id)) {
+    for (const ClosedFormCheck& c : def.checks) {
         CheckRow r{def.id, c.name, 0.0, c.tolerance, false, ""};
         const auto [err, where] = c.run(*quad.evaluator);
         r.max_error = err;

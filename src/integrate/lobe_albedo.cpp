@@ -69,6 +69,19 @@ Estimate<1> lobe_albedo_average(Lobe lobe, double p, double abs_tol) {
     return out;
 }
 
+double lobe_brdf(Lobe lobe, const Vec3& wo, const Vec3& wi, double p) {
+    switch (lobe) {
+        case Lobe::disney_diffuse: return disney_diffuse_brdf(wo, wi, p);
+        case Lobe::disney_subsurface: return disney_subsurface_brdf(wo, wi, p);
+        case Lobe::disney_sheen: return disney_sheen_brdf(wo, wi);
+        case Lobe::disney_clearcoat: return disney_clearcoat_brdf(wo, wi, p);
+        case Lobe::oren_nayar: return OrenNayar{p}.brdf(wo, wi);
+        case Lobe::fujii_oren_nayar: return FujiiOrenNayar{p}.brdf(wo, wi);
+        case Lobe::eon: return Eon{FujiiOrenNayar{p}}.brdf(wo, wi);
+    }
+    return 0.0;
+}
+
 namespace {
 
 // f(wo, wi) cos(theta_i) / pdf(wi) for one sampled wi. Cosine-weighted
@@ -92,17 +105,7 @@ double lobe_sample(Lobe lobe, const Vec3& wo, double p, Rng& rng) {
     // 1 - u1 > 0 keeps wi strictly above the horizon.
     const double r = std::sqrt(u1);
     const Vec3 wi{r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - u1)};
-    double f = 0.0;
-    switch (lobe) {
-        case Lobe::disney_diffuse: f = disney_diffuse_brdf(wo, wi, p); break;
-        case Lobe::disney_subsurface: f = disney_subsurface_brdf(wo, wi, p); break;
-        case Lobe::disney_sheen: f = disney_sheen_brdf(wo, wi); break;
-        case Lobe::oren_nayar: f = OrenNayar{p}.brdf(wo, wi); break;
-        case Lobe::fujii_oren_nayar: f = FujiiOrenNayar{p}.brdf(wo, wi); break;
-        case Lobe::eon: f = Eon{FujiiOrenNayar{p}}.brdf(wo, wi); break;
-        case Lobe::disney_clearcoat: break;
-    }
-    return kPi * f;
+    return kPi * lobe_brdf(lobe, wo, wi, p);
 }
 
 }  // namespace

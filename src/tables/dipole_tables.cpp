@@ -14,7 +14,9 @@
 #include "brdflut/dipole.h"
 #include "brdflut/dipole_integrals.h"
 #include "brdflut/error.h"
+#include "brdflut/math.h"
 #include "brdflut/random.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -237,7 +239,10 @@ TableDefinition base(std::string id, std::string description, std::vector<AxisSp
 
 }  // namespace
 
-void register_dipole_tables(std::vector<TableDefinition>& out) {
+void register_dipole_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
+    // The boundary term of the default settings, which verify's checks use.
+    const double A = boundary_from(default_settings(base("", "", {}, {}))).A;
     {
         TableDefinition d = base(
             "dipole_profile",
@@ -258,6 +263,18 @@ void register_dipole_tables(std::vector<TableDefinition>& out) {
                 "2 pi z [e^(-s_tr z)/z - e^(-s_tr d)/d], evaluated with expm1/log1p");
             return p;
         };
+        d.checks = {
+            {"CDF x total vs the numerical integral of 2 pi r R_d over [0, r]", 1e-9,
+             [A](const TexelEvaluator& e) {
+                 return tables::worst_error(
+                     e, tables::grid_points({1e-3, 0.1, 1.0, 10.0, 64.0}, {0.1, 0.5, 0.9, 1.0}),
+                     [A](const TexelValue& v, const auto& p) {
+                         const Dipole dip = Dipole::from_albedo(p[1], A);
+                         return v.value[1] * dip.total_reflectance() -
+                                dipole_reflectance_quadrature(dip, p[0], 1e-13).value[0];
+                     });
+             }},
+        };
         out.push_back(std::move(d));
     }
     {
@@ -277,6 +294,17 @@ void register_dipole_tables(std::vector<TableDefinition>& out) {
                            : closed_form_method("(a'/2)(1 + e^(-(4/3) A sqrt(3(1 - a')))) e^(-sqrt(3(1 - a')))");
             return p;
         };
+        d.checks = {
+            {"total vs the numerical integral of 2 pi r R_d(r)", 1e-9,
+             [A](const TexelEvaluator& e) {
+                 return tables::worst_over(e, tables::points_1d({0.0, 0.01, 0.3, 0.7, 0.95, 0.999, 1.0}), 0,
+                                           [A](const auto& p) {
+                                               return dipole_reflectance_quadrature(Dipole::from_albedo(p[0], A),
+                                                                                    HUGE_VAL, 1e-12)
+                                                   .value[0];
+                                           });
+             }},
+        };
         out.push_back(std::move(d));
     }
     {
@@ -295,6 +323,15 @@ void register_dipole_tables(std::vector<TableDefinition>& out) {
                                  "to the last bits; error per value: distance to the root by one more "
                                  "Newton step plus rounding"}};
             return p;
+        };
+        d.checks = {
+            {"total(inverse(R)) vs R", 1e-12,
+             [A](const TexelEvaluator& e) {
+                 return tables::worst_error(e, tables::points_1d({0.0, 0.05, 0.3, 0.6, 0.9, 0.999}),
+                                            [A](const TexelValue& v, const auto& p) {
+                                                return dipole_total_reflectance(v.value[0], A) - p[0];
+                                            });
+             }},
         };
         out.push_back(std::move(d));
     }
@@ -356,6 +393,35 @@ void register_dipole_tables(std::vector<TableDefinition>& out) {
             p.model["units"] = "radius in mm, R_d in 1/mm^2";
             p.method = closed_form_method("R_d by the dipole formula, per channel");
             return p;
+        };
+        // Each channel's profile integrated over the plane, 2 pi integral of
+        // r R_d(r) dr in ln(r) from 1e-9 mm (below which it adds < 1e-15)
+        // to 1e4 mm (past which the profile of the default material is
+        // below e^-2000), against the closed-form total reflectance.
+        d.checks = {
+            {"2 pi integral of r R_d(r) dr vs the closed-form total reflectance (default material)", 1e-10,
+             [A](const TexelEvaluator& e) {
+                 const MeasuredMaterial& m = find_measured_material(kDefaultMaterial);
+                 AdaptiveOptions opt;
+                 opt.abs_tol = 1e-13;
+                 opt.max_intervals = 4000;
+                 opt.rule = KronrodRule::k31;
+                 const Estimate<3> total = integrate_adaptive_panels<3>(
+                     [&](double x) {
+                         const double r = std::exp(x);
+                         const TexelValue v = e.evaluate(&r, 0);
+                         return std::array<double, 3>{kTwoPi * r * r * v.value[0], kTwoPi * r * r * v.value[1],
+                                                      kTwoPi * r * r * v.value[2]};
+                     },
+                     std::log(1e-9), std::log(1e4), 64, opt);
+                 tables::CheckResult r{0.0, ""};
+                 for (std::size_t c = 0; c < 3; ++c) {
+                     const double want = Dipole(m.sigma_s_prime[c], m.sigma_a[c], A).total_reflectance();
+                     const double err = std::abs(total.value[c] - want);
+                     if (!(err < r.first)) r = {err, std::string("channel ") + "RGB"[c] + " of " + m.name};
+                 }
+                 return r;
+             }},
         };
         out.push_back(std::move(d));
     }

@@ -12,6 +12,7 @@
 #include "brdflut/error.h"
 #include "brdflut/fresnel_integrals.h"
 #include "brdflut/random.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -229,9 +230,13 @@ private:
     double abs_tol_;
 };
 
+// Indices at which the dielectric table is checked.
+const std::vector<double> kCheckEtas{1.0, 1.2, 1.33, 1.5, 2.0, 2.9};
+
 }  // namespace
 
-void register_fresnel_tables(std::vector<TableDefinition>& out) {
+void register_fresnel_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
     {
         TableDefinition d;
@@ -249,6 +254,18 @@ void register_fresnel_tables(std::vector<TableDefinition>& out) {
                        {"eta", "eta_t / eta_i; eta < 1: light inside the denser medium"}};
             p.method = closed_form_method();
             return p;
+        };
+        d.checks = {
+            {"F at normal incidence vs ((eta - 1)/(eta + 1))^2", 1e-15,
+             [](const TexelEvaluator& e) {
+                 return worst_over(e, grid_points({1.0}, kCheckEtas), 0,
+                                   [](const auto& p) { return sqr((p[1] - 1) / (p[1] + 1)); });
+             }},
+            {"F at grazing incidence vs 1", 1e-15,
+             [](const TexelEvaluator& e) {
+                 return worst_over(e, grid_points({0.0}, kCheckEtas), 0,
+                                   [](const auto& p) { return p[1] == 1.0 ? 0.0 : 1.0; });
+             }},
         };
         out.push_back(std::move(d));
     }
@@ -271,6 +288,19 @@ void register_fresnel_tables(std::vector<TableDefinition>& out) {
             p.method = average_method(s);
             return p;
         };
+        d.checks = {
+            {"F_avg(eta) vs the exact closed form (eta > 1)", 1e-10,
+             [](const TexelEvaluator& e) {
+                 return worst_over(e, points_1d({1.01, 1.33, 1.5, 2.0, 2.99}), 0,
+                                   [](const auto& p) { return fresnel_dielectric_average_closed_form(p[0]); });
+             }},
+            {"F_avg(1/eta) vs 1 - (1 - F_avg(eta))/eta^2", 1e-10,
+             [](const TexelEvaluator& e) {
+                 return worst_over(e, points_1d({1.01, 1.33, 1.5, 2.0, 2.99}), 1, [](const auto& p) {
+                     return 1.0 - (1.0 - fresnel_dielectric_average_closed_form(p[0])) / (p[0] * p[0]);
+                 });
+             }},
+        };
         out.push_back(std::move(d));
     }
     {
@@ -290,6 +320,22 @@ void register_fresnel_tables(std::vector<TableDefinition>& out) {
             {"k", "conductor: extinction coefficient per channel, r,g,b (with --eta)", "", {}},
             fresnel_option()};
         d.prepare = prepare_conductor;
+        d.checks = {
+            {"F at normal incidence vs ((eta - 1)^2 + k^2)/((eta + 1)^2 + k^2) (gold)", 1e-15,
+             [](const TexelEvaluator& e) {
+                 const ConductorPreset& gold = conductor_preset("gold");
+                 CheckResult r{0.0, ""};
+                 const double mu = 1.0;
+                 const TexelValue v = e.evaluate(&mu, 0);
+                 for (std::size_t c = 0; c < 3; ++c) {
+                     const double eta = gold.eta[c], k = gold.k[c];
+                     const double want = (sqr(eta - 1) + k * k) / (sqr(eta + 1) + k * k);
+                     const double err = std::abs(v.value[c] - want);
+                     if (!(err < r.first)) r = {err, std::string("channel ") + "RGB"[c]};
+                 }
+                 return r;
+             }},
+        };
         out.push_back(std::move(d));
     }
     {
@@ -311,6 +357,13 @@ void register_fresnel_tables(std::vector<TableDefinition>& out) {
                        {"quantity", "F_avg = 2 * integral of F(mu) mu dmu over [0, 1]"}};
             p.method = average_method(s);
             return p;
+        };
+        d.checks = {
+            {"F_avg(eta, k = 0) vs the dielectric closed form", 1e-9,
+             [](const TexelEvaluator& e) {
+                 return worst_over(e, grid_points({1.2, 1.5, 2.0, 3.5}, {0.0}), 0,
+                                   [](const auto& p) { return fresnel_dielectric_average_closed_form(p[0]); });
+             }},
         };
         out.push_back(std::move(d));
     }

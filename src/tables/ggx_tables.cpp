@@ -6,6 +6,7 @@
 
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/random.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 #include "tables/shared_results.h"
 
@@ -44,12 +45,6 @@ nlohmann::json ggx_model(Visibility vis) {
 
 enum class Kind { dfg, albedo, albedo_avg };
 
-// Split sums computed in this process, shared by the tables of one run:
-// ggx_albedo is A + B of ggx_dfg's texels (262,144 texels at most, ~25 MB).
-tables::SharedResults<4, Estimate<2>>& split_sum_cache() {
-    static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
-    return cache;
-}
 
 class GgxEvaluator final : public TexelEvaluator {
 public:
@@ -73,10 +68,7 @@ public:
         const double mu = c[0], alpha = c[1];
         bool computed = true;
         const Estimate<2> e = mc ? ggx_split_sum_mc(mu, alpha, vis_, samples_, seed)
-                                 : split_sum_cache().get(
-                                       {tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol_),
-                                        tables::key_enum(vis_)},
-                                       [&] { return ggx_split_sum(mu, alpha, vis_, abs_tol_); }, &computed);
+                                 : tables::ggx_split_sum_shared(mu, alpha, vis_, abs_tol_, &computed);
         if (computed) out.evaluations = e.evaluations;
         const double scale = mc ? tables::kMcErrorSigmas : 1.0;
         if (kind_ == Kind::dfg) {
@@ -123,20 +115,76 @@ TableDefinition make(Kind kind, std::string id, std::string description,
 
 }  // namespace
 
-void register_ggx_tables(std::vector<TableDefinition>& out) {
+double tables::ggx_table_tolerance(Quality q) { return kTolerances.at(q); }
+
+Estimate<2> tables::ggx_split_sum_shared(double mu, double alpha, Visibility vis, double abs_tol, bool* computed) {
+    // 262,144 texels at most, ~25 MB.
+    static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
+    return cache.get({tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol), tables::key_enum(vis)},
+                     [&] { return ggx_split_sum(mu, alpha, vis, abs_tol); }, computed);
+}
+
+void register_ggx_family(FamilyEntries& family) {
     using namespace tables;
-    out.push_back(make(Kind::dfg, "ggx_dfg",
-                       "GGX split-sum terms: specular = F0 * R + G (F = 1 inside the integral)",
-                       {cos_theta_axis(), alpha_axis()},
-                       {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i",
-                        "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i"}));
-    out.push_back(make(Kind::albedo, "ggx_albedo",
-                       "GGX directional albedo E(mu, alpha) = A + B (Kulla-Conty)",
-                       {cos_theta_axis(), alpha_axis()},
-                       {"E: integral of f cos(theta_i) dw_i with F = 1"}));
-    out.push_back(make(Kind::albedo_avg, "ggx_albedo_avg",
-                       "GGX average albedo E_avg(alpha) = 2 * integral of E(mu) mu dmu",
-                       {alpha_axis()}, {"E_avg: 2 * integral of E(mu) mu dmu"}));
+    std::vector<TableDefinition>& out = family.tables;
+    const std::vector<double> mus{0.5 / 128, 0.01, 0.05, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0};
+    const auto alpha_one = grid_points(mus, {1.0});
+    const auto mirror = grid_points({0.1, 0.3, 0.6, 1.0}, {1e-8});
+
+    TableDefinition dfg = make(Kind::dfg, "ggx_dfg",
+                               "GGX split-sum terms: specular = F0 * R + G (F = 1 inside the integral)",
+                               {cos_theta_axis(), alpha_axis()},
+                               {"A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i",
+                                "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i"});
+    dfg.checks = {
+        {"A + B at alpha = 1 vs 1 - mu ln(1 + 1/mu)", 1e-8,
+         [alpha_one](const TexelEvaluator& e) {
+             return worst_error(e, alpha_one, [](const TexelValue& v, const auto& p) {
+                 return v.value[0] + v.value[1] - ggx_albedo_alpha_one(p[0]);
+             });
+         }},
+        {"B at alpha = 1e-8 vs mirror limit (1 - mu)^5", 1e-6,
+         [mirror](const TexelEvaluator& e) {
+             return worst_over(e, mirror, 1, [](const auto& p) { return std::pow(1.0 - p[0], 5); });
+         }},
+    };
+    out.push_back(std::move(dfg));
+
+    TableDefinition albedo = make(Kind::albedo, "ggx_albedo",
+                                  "GGX directional albedo E(mu, alpha) = A + B (Kulla-Conty)",
+                                  {cos_theta_axis(), alpha_axis()},
+                                  {"E: integral of f cos(theta_i) dw_i with F = 1"});
+    albedo.checks = {
+        {"E at alpha = 1 vs 1 - mu ln(1 + 1/mu)", 1e-8,
+         [alpha_one](const TexelEvaluator& e) {
+             return worst_over(e, alpha_one, 0, [](const auto& p) { return ggx_albedo_alpha_one(p[0]); });
+         }},
+        {"E at alpha = 1e-8 vs mirror limit 1", 1e-6,
+         [mirror](const TexelEvaluator& e) { return worst_over(e, mirror, 0, [](const auto&) { return 1.0; }); }},
+    };
+    out.push_back(std::move(albedo));
+
+    TableDefinition avg = make(Kind::albedo_avg, "ggx_albedo_avg",
+                               "GGX average albedo E_avg(alpha) = 2 * integral of E(mu) mu dmu",
+                               {alpha_axis()}, {"E_avg: 2 * integral of E(mu) mu dmu"});
+    avg.checks = {
+        {"E_avg at alpha = 1 vs (4/3)(1 - ln 2)", 1e-8,
+         [](const TexelEvaluator& e) {
+             return worst_over(e, points_1d({1.0}), 0, [](const auto&) { return ggx_albedo_avg_alpha_one(); });
+         }},
+    };
+    out.push_back(std::move(avg));
+
+    const std::pair<std::string, std::string> hc{"visibility", "height_correlated"},
+        sep{"visibility", "separable"};
+    family.furnace_models.insert(family.furnace_models.end(), {
+        {"ggx", "GGX single scattering, height-correlated Smith G2", "ggx_albedo", "ggx_albedo_avg", {hc}, false,
+         false, 0},
+        {"ggx_separable", "GGX single scattering, separable Smith G1 G1", "ggx_albedo", "ggx_albedo_avg", {sep},
+         false, false, 0},
+        {"ggx_kulla_conty", "GGX (height-correlated) plus the Kulla-Conty multiple-scattering lobe", "ggx_albedo",
+         "ggx_albedo_avg", {hc}, true, true, 1e-4},
+    });
 }
 
 }  // namespace brdflut

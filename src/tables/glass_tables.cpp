@@ -8,6 +8,7 @@
 #include "brdflut/glass_integrals.h"
 #include "brdflut/random.h"
 #include "tables/shared_results.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -148,22 +149,73 @@ TableDefinition make(Kind kind, bool inside, std::string id, std::string descrip
     return d;
 }
 
+// GGX glass without an interface (n = 1): E_R = 0 and E_T = G2(mu, mu)
+// (1 + Lambda(mu)) (glass_index_matched_transmission), from either side.
+ClosedFormCheck index_matched_check(Kind kind) {
+    const double tol = kTolerances.standard + 1e-12;
+    if (kind == Kind::directional)
+        return {"E_R = 0 and E_T vs G2(mu, mu) (1 + Lambda(mu)) at n = 1 (no interface)", tol,
+                [](const TexelEvaluator& e) {
+                    std::vector<std::array<double, 3>> pts;
+                    for (double mu : {0.05, 0.4, 0.9})
+                        for (double alpha : {0.05, 0.3, 1.0}) pts.push_back({mu, alpha, 1.0});
+                    return tables::worst_error(e, pts, [](const TexelValue& v, const auto& p) {
+                        return std::abs(v.value[0]) +
+                               std::abs(v.value[1] - tables::glass_index_matched_transmission(
+                                                         p[0], p[1], Visibility::height_correlated));
+                    });
+                }};
+    return {"E_R avg = 0 and E_T avg vs 2 * integral of G2(mu, mu) (1 + Lambda(mu)) mu dmu at n = 1", tol,
+            [](const TexelEvaluator& e) {
+                return tables::worst_error(e, tables::grid_points({0.05, 0.3, 1.0}, {1.0}),
+                                           [](const TexelValue& v, const auto& p) {
+                                               return std::abs(v.value[0]) +
+                                                      std::abs(v.value[1] - tables::glass_index_matched_transmission_average(
+                                                                                p[0], Visibility::height_correlated));
+                                           });
+            }};
+}
+
 }  // namespace
 
-void register_glass_tables(std::vector<TableDefinition>& out) {
+void register_glass_family(FamilyEntries& family) {
     using namespace tables;
+    std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::directional, false, "ggx_glass_albedo",
                        "GGX rough glass seen from outside (eta = n): E_R, E_T, E_R + E_T over (mu, alpha, n)",
                        {cos_theta_axis(16), alpha_axis(16), ior_axis(16)}));
+    out.back().checks = {index_matched_check(Kind::directional)};
     out.push_back(make(Kind::directional, true, "ggx_glass_albedo_inside",
                        "GGX rough glass seen from inside (eta = 1/n): E_R, E_T, E_R + E_T over (mu, alpha, n)",
                        {cos_theta_axis(16), alpha_axis(16), ior_axis(16)}));
+    out.back().checks = {index_matched_check(Kind::directional)};
     out.push_back(make(Kind::average, false, "ggx_glass_albedo_avg",
                        "GGX rough glass from outside, averages 2 * integral of E(mu) mu dmu over (alpha, n)",
                        {alpha_axis(16), ior_axis(16)}));
+    out.back().checks = {index_matched_check(Kind::average)};
     out.push_back(make(Kind::average, true, "ggx_glass_albedo_avg_inside",
                        "GGX rough glass from inside, averages 2 * integral of E(mu) mu dmu over (alpha, n)",
                        {alpha_axis(16), ior_axis(16)}));
+    out.back().checks = {index_matched_check(Kind::average)};
+
+    // Allowed |E / E' - 1| of the compensated glass: the trilinear
+    // interpolation error of the 16^3 table, 5.7e-2 at worst on a 32^2 grid
+    // (mu = 1/64, alpha = 0.91), well below 1e-2 away from grazing view.
+    constexpr double kCompensationTolerance = 0.1;
+    const std::pair<std::string, std::string> hc{"visibility", "height_correlated"};
+    family.furnace_models.insert(
+        family.furnace_models.end(),
+        {{"ggx_glass", "GGX rough glass (Walter 2007) at n = 1.5 from outside: E_R + E_T, single scattering",
+          "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
+         {"ggx_glass_inside", "GGX rough glass at n = 1.5 from inside (eta = 1/n): E_R + E_T, single scattering",
+          "ggx_glass_albedo_inside", "ggx_glass_albedo_avg_inside", {hc}, false, false, 0, 2, {{"ior", 1.5}}},
+         // The interpolation error of the 16^3 table peaks at grazing view
+         // and small roughness, where E(mu) turns fastest.
+         {"ggx_glass_compensated",
+          "GGX rough glass at n = 1.5 from outside, E scaled by 1 / E from the default 16^3 table (Cycles' "
+          "compensation of untinted glass)",
+          "ggx_glass_albedo", "ggx_glass_albedo_avg", {hc}, false, true, kCompensationTolerance, 2,
+          {{"ior", 1.5}}, true}});
 }
 
 }  // namespace brdflut

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "brdflut/random.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut::tables {
@@ -66,6 +67,41 @@ private:
     double abs_tol_;
 };
 
+// E(1, p) by a second route: at normal incidence every lobe is symmetric
+// about the normal, so E(1, p) = 2 pi integral over theta_i of
+// f(n, wi(theta_i)) cos sin, with f evaluated pointwise (lobe_brdf), taken
+// in x = ln(theta_i) (the clearcoat peaks at theta_i = 0 with width 2 alpha
+// >= 0.002) from theta_i = 1e-9, below which the integrand adds < 1e-12.
+double normal_incidence_albedo(Lobe lobe, double p) {
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-13;
+    opt.max_intervals = 4000;
+    opt.rule = KronrodRule::k31;
+    const Vec3 wo{0.0, 0.0, 1.0};
+    return integrate_adaptive_panels<1>(
+               [&](double x) {
+                   const double t = std::exp(x);
+                   const Vec3 wi{std::sin(t), 0.0, std::cos(t)};
+                   return std::array<double, 1>{kTwoPi * lobe_brdf(lobe, wo, wi, p) * wi.z * wi.x * t};
+               },
+               std::log(1e-9), std::log(0.5 * kPi), 48, opt)
+        .value[0];
+}
+
+ClosedFormCheck normal_incidence_check(Lobe lobe, LobeTableKind kind) {
+    const std::vector<double> params = kind == LobeTableKind::albedo_1d ? std::vector<double>{0.0}
+                                                                        : std::vector<double>{0.0, 0.5, 1.0};
+    // The table's own tolerance, and the reference's (1e-13) with room for rounding.
+    return {"E(1, p) vs 2 pi integral of f(n, wi) cos(theta_i) sin(theta_i) dtheta_i (pointwise BRDF)",
+            kTolerances.standard + 1e-12, [lobe, kind, params](const TexelEvaluator& e) {
+                if (kind == LobeTableKind::albedo_1d)
+                    return worst_over(e, points_1d({1.0}), 0,
+                                      [lobe](const auto&) { return normal_incidence_albedo(lobe, 0.0); });
+                return worst_over(e, grid_points({1.0}, params), 0,
+                                  [lobe](const auto& pt) { return normal_incidence_albedo(lobe, pt[1]); });
+            }};
+}
+
 }  // namespace
 
 TableDefinition lobe_table(Lobe lobe, LobeTableKind kind, std::string id, std::string description,
@@ -76,6 +112,7 @@ TableDefinition lobe_table(Lobe lobe, LobeTableKind kind, std::string id, std::s
     d.axes = std::move(axes);
     d.channels = {std::move(channel)};
     d.supports_monte_carlo = true;
+    if (kind != LobeTableKind::albedo_average) d.checks.push_back(normal_incidence_check(lobe, kind));
     d.prepare = [lobe, kind, model](const TableSettings& s) {
         PreparedTable p;
         p.evaluator = std::make_unique<LobeEvaluator>(lobe, kind, s);

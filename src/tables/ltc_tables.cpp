@@ -15,6 +15,8 @@
 #include "brdflut/error.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "check/ltc_checks.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 #include "tables/shared_results.h"
 
@@ -394,8 +396,72 @@ const std::vector<Entry>& entries() {
 
 }  // namespace
 
-void register_ltc_tables(std::vector<TableDefinition>& out) {
-    for (const Entry& e : entries()) out.push_back(make(e));
+namespace {
+
+using tables::CheckResult;
+
+// The norm n0 against its closed form where the lobe has one: GGX at
+// roughness 1 (1 - mu ln(1 + 1/mu), height-correlated G2), the Charlie
+// sheen at normal incidence, EON everywhere (1: it conserves energy).
+ClosedFormCheck norm_check(LtcLobeKind kind) {
+    // The norms' quadrature tolerance and 1e-12 for the closed forms.
+    const double tol = kGgxTableTolerance + 1e-12;
+    switch (kind) {
+        case LtcLobeKind::ggx:
+            return {"n0 at roughness 1 vs 1 - mu ln(1 + 1/mu) (height-correlated G2)", tol,
+                    [](const TexelEvaluator& e) {
+                        std::vector<std::array<double, 2>> pts;
+                        for (double mu : {0.05, 0.25, 0.5, 0.75, 1.0}) pts.push_back({1.0, mu});
+                        return tables::worst_over(e, pts, 0,
+                                                  [](const auto& p) { return tables::ggx_albedo_alpha_one(p[1]); });
+                    }};
+        case LtcLobeKind::eon:
+            return {"n0 vs 1 (EON conserves energy at rho = 1)", tol, [](const TexelEvaluator& e) {
+                        return tables::worst_over(e, tables::grid_points({0.0, 0.3, 0.7, 1.0}, {1.0, 0.5, 0.05, 0.0}),
+                                                  0, [](const auto&) { return 1.0; });
+                    }};
+        case LtcLobeKind::charlie_sheen:
+            return {"n0 at cos_theta = 1 vs 2^(1 - n/2) / (n + 2), n = 2 + 1/alpha", tol,
+                    [](const TexelEvaluator& e) {
+                        return tables::worst_over(e, tables::grid_points({0.2, 0.5, 0.8, 1.0}, {1.0}), 0,
+                                                  [](const auto& p) { return tables::charlie_albedo_normal(p[0] * p[0]); });
+                    }};
+    }
+    return {};
+}
+
+// ltc_2's sphere channel at len = 0 (cos_theta = 1) is the clamped cosine
+// of the horizon-clipped sphere: max(z, 0), z = 2 r - 1.
+ClosedFormCheck sphere_check() {
+    return {"sphere channel at len = 0 (cos_theta = 1) vs max(z, 0), z = 2 r - 1", 1e-15,
+            [](const TexelEvaluator& e) {
+                return tables::worst_over(e, tables::grid_points({0.0, 0.3, 0.5, 0.8, 1.0}, {1.0}), 3,
+                                          [](const auto& p) { return std::max(2.0 * p[0] - 1.0, 0.0); });
+            }};
+}
+
+std::vector<ClosedFormCheck> entry_checks(const Entry& e, const std::string& parameter) {
+    switch (e.layout) {
+        case Layout::heitz_matrix:
+            return {ltc_local_minimum_check(e.id, parameter), ltc_metadata_maxima_check(e.id)};
+        case Layout::hdrp_matrix:
+            return {ltc_local_minimum_check(e.id, parameter), ltc_metadata_maxima_check(e.id)};
+        case Layout::heitz_norms: return {norm_check(e.lobe), sphere_check()};
+        case Layout::norm: return {norm_check(e.lobe)};
+        case Layout::report: return {ltc_report_check(e.id, parameter)};
+    }
+    return {};
+}
+
+}  // namespace
+
+void register_ltc_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
+    for (const Entry& e : entries()) {
+        TableDefinition d = make(e);
+        d.checks = entry_checks(e, d.axes[0].axis.name);
+        out.push_back(std::move(d));
+    }
 }
 
 LtcLobe ltc_table_lobe(const std::string& id, double roughness, double mu, Visibility vis) {

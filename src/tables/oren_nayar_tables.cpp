@@ -4,12 +4,40 @@
 // Fujii 2012, "A tiny improvement of Oren-Nayar reflectance model"
 // Portsmouth et al. 2025, "EON: A practical energy-preserving rough diffuse BRDF"
 #include "brdflut/oren_nayar.h"
+#include "tables/checks.h"
 #include "tables/lobe_table.h"
 #include "tables/registry.h"
 
 namespace brdflut {
 
-void register_oren_nayar_tables(std::vector<TableDefinition>& out) {
+namespace {
+
+// The qualitative model's albedo in closed form:
+// E = A + (2B/pi)((tan_o/3)(1 - sin_o^3) + sin_o (theta_o - sin_o mu_o)/2).
+double oren_nayar_albedo_closed_form(double mu, double sigma) {
+    const OrenNayar on{sigma};
+    const double t = std::acos(mu), s = std::sin(t);
+    // mu > 0: the callers' points and the quadrature's nodes.
+    return on.A() + 2.0 * on.B() / kPi * ((s / mu) / 3.0 * (1.0 - s * s * s) + 0.5 * s * (t - s * mu));
+}
+
+// 2 * integral of the closed-form E(mu) mu dmu (E is bounded: the mu in the
+// weight cancels tan_o's pole).
+double oren_nayar_average_of_closed_form(double sigma) {
+    AdaptiveOptions opt;
+    opt.abs_tol = 1e-14;
+    opt.max_intervals = 400;
+    opt.rule = KronrodRule::k31;
+    return integrate_adaptive<1>(
+               [&](double mu) { return std::array<double, 1>{2.0 * oren_nayar_albedo_closed_form(mu, sigma) * mu}; },
+               0.0, 1.0, opt)
+        .value[0];
+}
+
+}  // namespace
+
+void register_oren_nayar_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
     const AxisSpec sigma_rad = unit_axis(
         "sigma", "Oren-Nayar roughness: standard deviation of the facet slope angle, radians");
@@ -35,25 +63,74 @@ void register_oren_nayar_tables(std::vector<TableDefinition>& out) {
 
     const char* e = "E: integral of f cos(theta_i) dw_i";
     const char* e_avg = "E_avg: 2 * integral of E(mu) mu dmu";
-    out.push_back(lobe_table(Lobe::oren_nayar, LobeTableKind::albedo, "oren_nayar_albedo",
-                             "Oren-Nayar (qualitative) directional albedo E(mu, sigma), rho = 1",
-                             {cos_theta_axis(), sigma_rad}, e, on));
-    out.push_back(lobe_table(Lobe::oren_nayar, LobeTableKind::albedo_average,
-                             "oren_nayar_albedo_avg", "Oren-Nayar average albedo E_avg(sigma)",
-                             {sigma_rad}, e_avg, on));
-    out.push_back(lobe_table(Lobe::fujii_oren_nayar, LobeTableKind::albedo,
-                             "fujii_oren_nayar_albedo",
-                             "Fujii Oren-Nayar (FON) directional albedo E(mu, sigma), rho = 1",
-                             {cos_theta_axis(), sigma_fon}, e, fon));
-    out.push_back(lobe_table(Lobe::fujii_oren_nayar, LobeTableKind::albedo_average,
-                             "fujii_oren_nayar_albedo_avg", "Fujii Oren-Nayar average albedo",
-                             {sigma_fon}, e_avg, fon));
-    out.push_back(lobe_table(Lobe::eon, LobeTableKind::albedo, "eon_albedo",
-                             "EON directional albedo at rho = 1: a white furnace (1 everywhere)",
-                             {cos_theta_axis(), sigma_fon}, e, eon));
-    out.push_back(lobe_table(Lobe::eon, LobeTableKind::albedo_average, "eon_albedo_avg",
-                             "EON average albedo at rho = 1 (1 everywhere)", {sigma_fon}, e_avg,
-                             eon));
+    // The checks allow the table's tolerance and 1e-12 for the reference.
+    const double tol = kLobeAbsTolerance + 1e-12;
+    const auto grid = grid_points({0.5 / 128, 0.05, 0.3, 0.7, 1.0}, {0.0, 0.3, 0.7, 1.0});
+
+    TableDefinition on_e = lobe_table(Lobe::oren_nayar, LobeTableKind::albedo, "oren_nayar_albedo",
+                                      "Oren-Nayar (qualitative) directional albedo E(mu, sigma), rho = 1",
+                                      {cos_theta_axis(), sigma_rad}, e, on);
+    on_e.checks.push_back({"E(mu, sigma) vs A + (2B/pi)((tan_o/3)(1 - sin_o^3) + sin_o (theta_o - sin_o mu_o)/2)",
+                           tol, [grid](const TexelEvaluator& ev) {
+                               return worst_over(ev, grid, 0,
+                                                 [](const auto& p) { return oren_nayar_albedo_closed_form(p[0], p[1]); });
+                           }});
+    out.push_back(std::move(on_e));
+
+    TableDefinition on_avg = lobe_table(Lobe::oren_nayar, LobeTableKind::albedo_average, "oren_nayar_albedo_avg",
+                                        "Oren-Nayar average albedo E_avg(sigma)", {sigma_rad}, e_avg, on);
+    on_avg.checks.push_back({"E_avg(sigma) vs 2 * integral of the closed-form E(mu) mu dmu", tol,
+                             [](const TexelEvaluator& ev) {
+                                 return worst_over(ev, points_1d({0.0, 0.3, 0.7, 1.0}), 0, [](const auto& p) {
+                                     return oren_nayar_average_of_closed_form(p[0]);
+                                 });
+                             }});
+    out.push_back(std::move(on_avg));
+
+    TableDefinition fon_e = lobe_table(Lobe::fujii_oren_nayar, LobeTableKind::albedo, "fujii_oren_nayar_albedo",
+                                       "Fujii Oren-Nayar (FON) directional albedo E(mu, sigma), rho = 1",
+                                       {cos_theta_axis(), sigma_fon}, e, fon);
+    fon_e.checks.push_back({"E(mu, sigma) vs A + (sigma A/pi) G(theta)", tol, [grid](const TexelEvaluator& ev) {
+                                return worst_over(ev, grid, 0,
+                                                  [](const auto& p) { return FujiiOrenNayar{p[1]}.albedo(p[0]); });
+                            }});
+    out.push_back(std::move(fon_e));
+
+    TableDefinition fon_avg = lobe_table(Lobe::fujii_oren_nayar, LobeTableKind::albedo_average,
+                                         "fujii_oren_nayar_albedo_avg", "Fujii Oren-Nayar average albedo",
+                                         {sigma_fon}, e_avg, fon);
+    fon_avg.checks.push_back({"E_avg(sigma) vs A (1 + (2/3 - 28/(15 pi)) sigma)", tol, [](const TexelEvaluator& ev) {
+                                  return worst_over(ev, points_1d({0.0, 0.2, 0.6, 1.0}), 0, [](const auto& p) {
+                                      return FujiiOrenNayar{p[0]}.average_albedo();
+                                  });
+                              }});
+    out.push_back(std::move(fon_avg));
+
+    // EON at rho = 1 is a white furnace: its albedo is 1 up to the
+    // quadrature of the FON part and of the multiple-scattering lobe.
+    TableDefinition eon_e = lobe_table(Lobe::eon, LobeTableKind::albedo, "eon_albedo",
+                                       "EON directional albedo at rho = 1: a white furnace (1 everywhere)",
+                                       {cos_theta_axis(), sigma_fon}, e, eon);
+    eon_e.checks.push_back({"E(mu, sigma) vs 1 (white furnace)", tol, [grid](const TexelEvaluator& ev) {
+                                return worst_over(ev, grid, 0, [](const auto&) { return 1.0; });
+                            }});
+    out.push_back(std::move(eon_e));
+
+    TableDefinition eon_avg = lobe_table(Lobe::eon, LobeTableKind::albedo_average, "eon_albedo_avg",
+                                         "EON average albedo at rho = 1 (1 everywhere)", {sigma_fon}, e_avg, eon);
+    eon_avg.checks.push_back({"E_avg(sigma) vs 1 (white furnace)", tol, [](const TexelEvaluator& ev) {
+                                  return worst_over(ev, points_1d({0.0, 0.5, 1.0}), 0, [](const auto&) { return 1.0; });
+                              }});
+    out.push_back(std::move(eon_avg));
+
+    family.furnace_models.insert(
+        family.furnace_models.end(),
+        {{"oren_nayar", "Oren-Nayar 1994, qualitative model", "oren_nayar_albedo", "oren_nayar_albedo_avg", {},
+          false, false, 0},
+         {"fujii_oren_nayar", "Fujii Oren-Nayar (OpenPBR normalization)", "fujii_oren_nayar_albedo",
+          "fujii_oren_nayar_albedo_avg", {}, false, false, 0},
+         {"eon", "EON, energy-preserving Oren-Nayar (Portsmouth et al. 2025)", "eon_albedo", "eon_albedo_avg", {},
+          false, true, 1e-6}});
 }
 
 }  // namespace brdflut

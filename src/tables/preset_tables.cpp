@@ -14,6 +14,7 @@
 #include "brdflut/lobe_integrals.h"
 #include "brdflut/random.h"
 #include "brdflut/sheen_integrals.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -82,7 +83,7 @@ public:
             case Kind::cycles_ggx_e_avg: {
                 const Estimate<1> e = mc_ ? ggx_albedo_average_mc(c[0], Visibility::height_correlated, samples_, seed)
                                           : ggx_albedo_average(c[0], Visibility::height_correlated,
-                                                               tolerance(kGgxAbsTolerance));
+                                                               tables::ggx_table_tolerance(quality_));
                 out.value[0] = e.value[0];
                 out.error[0] = scale() * e.error[0];
                 out.evaluations = e.evaluations;
@@ -132,8 +133,11 @@ private:
     // of a sum is bounded by the sum of the errors).
     Estimate<2> split(double mu, double alpha, Visibility vis, std::uint64_t seed) const {
         // mu = 0 (end-point grids) gives the grazing limit: see kGrazingMu.
+        bool computed = true;
         Estimate<2> e = mc_ ? ggx_split_sum_mc(mu, alpha, vis, samples_, seed)
-                            : ggx_split_sum(mu, alpha, vis, tolerance(kGgxAbsTolerance));
+                            : tables::ggx_split_sum_shared(mu, alpha, vis, tables::ggx_table_tolerance(quality_),
+                                                           &computed);
+        if (!computed) e.evaluations = 0;
         for (double& x : e.error) x *= scale();
         return e;
     }
@@ -218,6 +222,87 @@ struct Entry {
     nlohmann::json model;
 };
 
+// The preset's independent checks: the closed forms of its channels'
+// integrals, at the preset's own coordinates. Each allows the sum of the
+// tolerances of the integrals in the channel and 1e-12 for the closed form.
+std::vector<ClosedFormCheck> preset_checks(Kind kind) {
+    using namespace tables;
+    const double ggx = ggx_table_tolerance(Quality::standard), glass = kGlassTolerances.standard;
+    const std::vector<double> mus{0.5 / 128, 0.05, 0.25, 0.5, 0.9, 1.0};
+    // A + B at roughness 1 (alpha = 1), from the channels that hold it.
+    auto split_at_one = [&](int a, int b, bool schlick) {
+        return ClosedFormCheck{
+            schlick ? "A + B at roughness 1 vs 2 (1 - ln 2)/(1 + mu) (Schlick-Smith, k = 1/2)"
+                    : "A + B at roughness 1 vs 1 - mu ln(1 + 1/mu)",
+            2 * ggx + 1e-12, [mus, a, b, schlick](const TexelEvaluator& e) {
+                return worst_error(e, grid_points(mus, {1.0}), [a, b, schlick](const TexelValue& v, const auto& p) {
+                    const double sum = (a >= 0 ? v.value[static_cast<std::size_t>(a)] : 0.0) +
+                                       v.value[static_cast<std::size_t>(b)];
+                    return sum - (schlick ? ggx_schlick_albedo_alpha_one(p[0]) : ggx_albedo_alpha_one(p[0]));
+                });
+            }};
+    };
+    // Charlie sheen E at normal incidence, channel c, roughness axis second.
+    auto charlie_normal = [](int c) {
+        return ClosedFormCheck{"Charlie E(1, r) vs 2^(1 - n/2) / (n + 2), n = 2 + 1/r^2", kSheenAbsTolerance + 1e-12,
+                               [c](const TexelEvaluator& e) {
+                                   return worst_over(e, grid_points({1.0}, {0.2, 0.5, 1.0}), c, [](const auto& p) {
+                                       return charlie_albedo_normal(p[1] * p[1]);
+                                   });
+                               }};
+    };
+    // Glass at n = 1, E_R + E_T: the straight path masked on both sides.
+    auto glass_index_matched = [glass](bool average) {
+        if (!average)
+            return ClosedFormCheck{"E at n = 1 vs G2(mu, mu) (1 + Lambda(mu)) (no interface)", 2 * glass + 1e-12,
+                                   [](const TexelEvaluator& e) {
+                                       std::vector<std::array<double, 3>> pts;
+                                       for (double alpha : {0.05, 0.3, 1.0})
+                                           for (double mu : {0.05, 0.4, 0.9}) pts.push_back({alpha, mu, 1.0});
+                                       return worst_over(e, pts, 0, [](const auto& p) {
+                                           return glass_index_matched_transmission(p[1], p[0],
+                                                                                   Visibility::height_correlated);
+                                       });
+                                   }};
+        return ClosedFormCheck{"E_avg at n = 1 vs 2 * integral of G2(mu, mu) (1 + Lambda(mu)) mu dmu",
+                               2 * glass + 1e-12, [](const TexelEvaluator& e) {
+                                   return worst_over(e, grid_points({0.05, 0.3, 1.0}, {1.0}), 0, [](const auto& p) {
+                                       return glass_index_matched_transmission_average(p[0],
+                                                                                       Visibility::height_correlated);
+                                   });
+                               }};
+    };
+    switch (kind) {
+        case Kind::filament_dfg: return {split_at_one(-1, 1, false), charlie_normal(2)};
+        case Kind::unreal_dfg: return {split_at_one(0, 1, true)};
+        case Kind::split_sum: return {split_at_one(0, 1, false)};
+        case Kind::hdrp_fgd:
+            return {split_at_one(-1, 1, false),
+                    {"B at roughness 0 vs (41/42)(1 - (1 - mu)^5/2) - 1/2 (Disney diffuse)", kLobeAbsTolerance + 1e-12,
+                     [mus](const TexelEvaluator& e) {
+                         return worst_over(e, grid_points(mus, {0.0}), 2, [](const auto& p) {
+                             return 41.0 / 42.0 * (1.0 - 0.5 * std::pow(1.0 - p[0], 5)) - 0.5;
+                         });
+                     }}};
+        case Kind::cycles_ggx_e:
+            return {{"E at alpha = 1 vs 1 - mu ln(1 + 1/mu)", 2 * ggx + 1e-12, [mus](const TexelEvaluator& e) {
+                         std::vector<std::array<double, 2>> pts;
+                         for (double mu : mus) pts.push_back({1.0, mu});
+                         return worst_over(e, pts, 0, [](const auto& p) { return ggx_albedo_alpha_one(p[1]); });
+                     }}};
+        case Kind::cycles_ggx_e_avg:
+            return {{"E_avg at alpha = 1 vs (4/3)(1 - ln 2)", ggx + 1e-12, [](const TexelEvaluator& e) {
+                         return worst_over(e, points_1d({1.0}), 0, [](const auto&) { return ggx_albedo_avg_alpha_one(); });
+                     }}};
+        case Kind::gltf_charlie: return {charlie_normal(2)};
+        case Kind::cycles_glass_e:
+        case Kind::cycles_glass_inv_e: return {glass_index_matched(false)};
+        case Kind::cycles_glass_e_avg:
+        case Kind::cycles_glass_inv_e_avg: return {glass_index_matched(true)};
+    }
+    return {};
+}
+
 TableDefinition make(Entry e) {
     TableDefinition d;
     d.id = e.id;
@@ -227,6 +312,7 @@ TableDefinition make(Entry e) {
     d.supports_monte_carlo = true;
     d.searched_by_identify = e.kind != Kind::cycles_glass_e_avg && e.kind != Kind::cycles_glass_inv_e_avg;
     d.preset = e.preset;
+    d.checks = preset_checks(e.kind);
     nlohmann::json model = e.model;
     model["preset"] = e.preset;
     model["engine_source"] = e.engine_source;
@@ -242,9 +328,8 @@ TableDefinition make(Entry e) {
                                                     "cosine hemisphere (disney_*), uniform + Charlie "
                                                     "mixture (sheen_*), a defensive mixture of GGX "
                                                     "visible normals (ggx_glass_*)", s)
-                       : tables::quadrature_method(kQuadratureRule,
-                                                   (glass ? tables::kGlassTolerances : tables::quadrature_tolerances(kGgxAbsTolerance))
-                                                       .at(s.quality));
+                       : tables::quadrature_method(kQuadratureRule, glass ? tables::kGlassTolerances.at(s.quality)
+                                                                          : tables::ggx_table_tolerance(s.quality));
         return p;
     };
     return d;
@@ -280,7 +365,8 @@ const std::vector<Preset>& presets() {
     return all;
 }
 
-void register_preset_tables(std::vector<TableDefinition>& out) {
+void register_preset_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
     const nlohmann::json hc = ggx_model(Visibility::height_correlated);
     nlohmann::json filament_model = hc;
     filament_model["cloth"] = tables::charlie_sheen_model();

@@ -4,20 +4,32 @@
 #include <vector>
 
 #include "brdflut/catalogue.h"
+#include "brdflut/furnace.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
 
 namespace brdflut {
 
-void register_ggx_tables(std::vector<TableDefinition>& out);
-void register_fresnel_tables(std::vector<TableDefinition>& out);
-void register_dipole_tables(std::vector<TableDefinition>& out);
-void register_disney_tables(std::vector<TableDefinition>& out);
-void register_oren_nayar_tables(std::vector<TableDefinition>& out);
-void register_sheen_tables(std::vector<TableDefinition>& out);
-void register_glass_tables(std::vector<TableDefinition>& out);
-void register_preset_tables(std::vector<TableDefinition>& out);
-void register_ltc_tables(std::vector<TableDefinition>& out);
+// What one family file gives the catalogue: its tables, each with its
+// independent checks, and the white-furnace models built on them.
+struct FamilyEntries {
+    std::vector<TableDefinition> tables;
+    std::vector<FurnaceModel> furnace_models;
+};
+
+void register_ggx_family(FamilyEntries& out);
+void register_fresnel_family(FamilyEntries& out);
+void register_dipole_family(FamilyEntries& out);
+void register_disney_family(FamilyEntries& out);
+void register_oren_nayar_family(FamilyEntries& out);
+void register_sheen_family(FamilyEntries& out);
+void register_glass_family(FamilyEntries& out);
+void register_preset_family(FamilyEntries& out);
+void register_ltc_family(FamilyEntries& out);
+
+// Every family's entries, registered once (catalogue() and furnace_models()
+// read them).
+const FamilyEntries& families();
 
 // Helpers shared by the table families.
 namespace tables {
@@ -61,6 +73,15 @@ nlohmann::json glass_model(Visibility vis, bool inside);
 // sides (ggx_glass_average_of_parts), is integrated once per process and
 // shared (its evaluations are counted where it is computed).
 Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol);
+
+// The GGX tables' absolute tolerance at a quality (ggx_tables.cpp), which
+// every table of the same integrals (the presets) takes.
+double ggx_table_tolerance(Quality q);
+// {A, B} of the GGX split sum, integrated once per process for each (mu,
+// alpha, visibility, tolerance) and shared by every table that needs it
+// (ggx_dfg, ggx_albedo, the presets); *computed (if given) says whether this
+// call integrated it.
+Estimate<2> ggx_split_sum_shared(double mu, double alpha, Visibility vis, double abs_tol, bool* computed = nullptr);
 
 // Model metadata of the Charlie sheen lobe (sheen_tables.cpp).
 nlohmann::json charlie_sheen_model();

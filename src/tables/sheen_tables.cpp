@@ -5,6 +5,7 @@
 
 #include "brdflut/random.h"
 #include "brdflut/sheen_integrals.h"
+#include "tables/checks.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -51,7 +52,8 @@ nlohmann::json tables::charlie_sheen_model() {
             {"roughness", "alpha = perceptual_roughness^2"}};
 }
 
-void register_sheen_tables(std::vector<TableDefinition>& out) {
+void register_sheen_family(FamilyEntries& family) {
+    std::vector<TableDefinition>& out = family.tables;
     TableDefinition d;
     d.id = "sheen_charlie_albedo";
     d.description = "Charlie sheen albedo E(mu, alpha) with Neubelt visibility (Filament's cloth DFG term)";
@@ -65,6 +67,20 @@ void register_sheen_tables(std::vector<TableDefinition>& out) {
         p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
                                                    : tables::quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
         return p;
+    };
+    // The table's tolerance and 1e-12 for the closed forms' rounding.
+    const double tol = kTolerances.standard + 1e-12;
+    d.checks = {
+        {"E(1, alpha) vs 2^(1 - n/2) / (n + 2), n = 2 + 1/alpha", tol,
+         [](const TexelEvaluator& e) {
+             return tables::worst_over(e, tables::grid_points({1.0}, {1e-3, 0.05, 0.1, 0.5, 1.0}), 0,
+                                       [](const auto& p) { return tables::charlie_albedo_normal(p[1]); });
+         }},
+        {"E(0, alpha) vs (n/pi)(sqrt(pi)/2) Gamma((n + 1)/2) / Gamma(n/2 + 1)", tol,
+         [](const TexelEvaluator& e) {
+             return tables::worst_over(e, tables::grid_points({0.0}, {0.25, 0.5, 1.0}), 0,
+                                       [](const auto& p) { return tables::charlie_albedo_grazing(p[1]); });
+         }},
     };
     out.push_back(std::move(d));
 }
