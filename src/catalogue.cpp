@@ -150,6 +150,14 @@ AxisSpec alpha_axis(int count) {
             "sqrt(alpha)"};
 }
 
+ModelOption visibility_option(std::vector<std::string> allowed) {
+    return {"visibility",
+            "GGX shadowing-masking term: height_correlated Smith G2 = 1/(1 + Lambda(o) + Lambda(i)) (Heitz "
+            "2014), separable G1(o) G1(i), or schlick_smith G1(mu) = mu/(mu (1 - k) + k), k = alpha/2 (Karis "
+            "2013); transmission takes Lambda of |cos(theta_i)|",
+            "height_correlated", std::move(allowed)};
+}
+
 const std::string& param(const TableSettings& s, const std::string& name) {
     auto it = s.params.find(name);
     if (it == s.params.end()) throw Error("option '" + name + "' is missing");

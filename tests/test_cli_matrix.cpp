@@ -54,9 +54,9 @@ TEST(CliMatrix, BadInputGivesAOneLineErrorNamingTheValueAndWhatIsAllowed) {
         // generate: model options
         {"generate ggx_dfg --visibility smith" + o, 2, {"'smith'", "height_correlated"}},
         {"generate ggx_dfg --material gold" + o, 2, {"--material does not apply"}},
-        {"generate fresnel_conductor --material unobtainium" + o, 2, {"unobtainium", "gold"}},
-        {"generate fresnel_conductor --eta 1,2 --k 1,2,3" + o, 2, {"--eta"}},
-        {"generate fresnel_conductor --eta 1,2,3 --k 1,-2,3" + o, 2, {"--k", "-2"}},
+        {"generate fresnel_conductor --metal unobtainium" + o, 2, {"unobtainium", "gold"}},
+        {"generate fresnel_conductor --metal-eta 1,2 --metal-k 1,2,3" + o, 2, {"--metal-eta"}},
+        {"generate fresnel_conductor --metal-eta 1,2,3 --metal-k 1,-2,3" + o, 2, {"--metal-k", "-2"}},
         {"generate fresnel_dielectric --range eta=0:3" + o, 2, {"eta", "0 < eta"}},
         {"generate fresnel_conductor_avg --range k=-1:3" + o, 2, {"k", "-1:3"}},
         {"generate dipole_total --eta 0" + o, 2, {"--eta", "0"}},

@@ -327,7 +327,7 @@ TEST(FresnelTables, ValuesMatchTheModelAtTheAxisParameters) {
     }
     {
         TableSettings s = small("fresnel_conductor", 8);
-        s.params["material"] = "copper";
+        s.params["metal"] = "copper";
         const Table t = generate(find_table("fresnel_conductor"), s);
         const ConductorPreset& cu = conductor_preset("copper");
         for (int i = 0; i < 8; ++i)
@@ -352,15 +352,15 @@ TEST(FresnelTables, ValuesMatchTheModelAtTheAxisParameters) {
 TEST(FresnelTables, ExplicitIndexEqualsThePresetWithTheSameValues) {
     const ConductorPreset& au = conductor_preset("gold");
     TableSettings s = small("fresnel_conductor", 16);
-    s.params["material"] = "silver";  // overridden by --eta and --k
+    s.params["metal"] = "silver";  // overridden by --metal-eta and --metal-k
     auto csv = [](const std::array<double, 3>& v) {
         std::ostringstream o;
         o.precision(17);
         o << v[0] << "," << v[1] << "," << v[2];
         return o.str();
     };
-    s.params["eta"] = csv(au.eta);
-    s.params["k"] = csv(au.k);
+    s.params["metal-eta"] = csv(au.eta);
+    s.params["metal-k"] = csv(au.k);
     const Table custom = generate(find_table("fresnel_conductor"), s);
     const Table preset = generate(find_table("fresnel_conductor"), small("fresnel_conductor", 16));
     EXPECT_EQ(custom.values, preset.values);
@@ -391,8 +391,8 @@ TEST(FresnelTables, EveryTableRoundTripsThroughExrWithMetadataThatReproducesIt) 
     };
     const Case cases[] = {{"fresnel_dielectric", {}},
                           {"fresnel_dielectric_avg", {}},
-                          {"fresnel_conductor", {{"material", "aluminium"}, {"fresnel", "approx"}}},
-                          {"fresnel_conductor", {{"eta", "0.2,0.9,1.3"}, {"k", "3.5,2.6,2"}}},
+                          {"fresnel_conductor", {{"metal", "aluminium"}, {"fresnel", "approx"}}},
+                          {"fresnel_conductor", {{"metal-eta", "0.2,0.9,1.3"}, {"metal-k", "3.5,2.6,2"}}},
                           {"fresnel_conductor_avg", {{"fresnel", "exact"}}}};
     for (const Case& c : cases) {
         TableSettings s = small(c.id, 7);
@@ -423,10 +423,10 @@ TEST(FresnelTables, EveryTableRoundTripsThroughExrWithMetadataThatReproducesIt) 
                     eta << (i ? "," : "") << model.at("eta")[i].get<double>();
                     k << (i ? "," : "") << model.at("k")[i].get<double>();
                 }
-                again.params["eta"] = eta.str();
-                again.params["k"] = k.str();
+                again.params["metal-eta"] = eta.str();
+                again.params["metal-k"] = k.str();
             } else {
-                again.params["material"] = model.at("material").get<std::string>();
+                again.params["metal"] = model.at("material").get<std::string>();
             }
         }
         const Table rebuilt = generate(find_table(c.id), again);

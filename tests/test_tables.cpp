@@ -41,6 +41,20 @@ TEST(Catalogue, EveryTableIsWellFormed) {
     }
 }
 
+TEST(Catalogue, EachOptionNameHasOneMeaning) {
+    // An option name means one thing across the catalogue: the same help
+    // text and default wherever it appears (a table may accept fewer values).
+    std::map<std::string, const ModelOption*> first;
+    for (const TableDefinition& d : catalogue())
+        for (const ModelOption& o : d.options) {
+            const auto [it, added] = first.emplace(o.name, &o);
+            if (added) continue;
+            EXPECT_EQ(o.help, it->second->help) << "--" << o.name << " of " << d.id;
+            EXPECT_EQ(o.default_value, it->second->default_value) << "--" << o.name << " of " << d.id;
+        }
+    EXPECT_GT(first.size(), 5u);
+}
+
 TEST(Catalogue, UnknownIdNamesTheKnownOnes) {
     try {
         find_table("ggx_nope");

@@ -131,14 +131,13 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
         }
     }
     if (!a.size.empty()) {
+        // N sets every axis; NxM[xK] sets the axes in storage order, and a
+        // table with fewer axes takes the first counts (check_all_used
+        // makes sure some requested table takes them all).
         const std::vector<int> n = parse_size(a.size);
-        if (n.size() > def.axes.size())
-            throw Error("--size '" + a.size + "' has " + std::to_string(n.size()) + " counts but table '" +
-                        def.id + "' has " + std::to_string(def.axes.size()) + " axis(es)");
-        for (std::size_t i = 0; i < n.size(); ++i) s.axes[i].count = n[i];
-        // A single N sets every axis of a multi-axis table: N x N.
-        if (n.size() == 1)
-            for (auto& ax : s.axes) ax.count = n[0];
+        for (std::size_t i = 0; i < s.axes.size(); ++i)
+            if (n.size() == 1 || i < n.size()) s.axes[i].count = n.size() == 1 ? n[0] : n[i];
+        if (n.size() == 1 || n.size() <= s.axes.size()) used.insert("--size");
     }
     auto axis_named = [&](const std::string& option, const std::string& name) -> Axis* {
         for (auto& ax : s.axes)
@@ -194,8 +193,15 @@ TableSettings settings_for(const TableDefinition& def, const TableArgs& a, std::
         if (Axis* ax = axis_named("--shift", name)) ax->shift = parse_double("--shift " + name, value);
     }
     if (!a.channels.empty()) {
-        s.channel_map = parse_channel_map(a.channels, static_cast<int>(def.channels.size()));
-        used.insert("--channels");
+        // The map applies to the tables that have every channel it names.
+        std::vector<std::vector<int>> map = parse_channel_map(a.channels, 4);
+        bool fits = true;
+        for (const auto& sum : map)
+            for (int c : sum) fits = fits && c < static_cast<int>(def.channels.size());
+        if (fits) {
+            s.channel_map = std::move(map);
+            used.insert("--channels");
+        }
     }
     for (const auto& [name, value] : a.params) {
         if (s.params.count(name)) {
@@ -231,7 +237,9 @@ void check_all_used(const TableArgs& a, const std::set<std::string>& used) {
         throw Error("--order '" + a.order +
                     "' is not an order of any requested table's axes; allowed: each of the table's axes once, x first");
     if (!a.channels.empty() && !used.count("--channels"))
-        throw Error("--channels does not apply to any requested table");
+        throw Error("--channels '" + a.channels + "' names a channel that no requested table has");
+    if (!a.size.empty() && !used.count("--size"))
+        throw Error("--size '" + a.size + "' has more counts than any requested table has axes");
     for (const auto& [name, value] : a.params)
         if (!used.count("--" + name)) throw Error("--" + name + " does not apply to any requested table");
 }

@@ -37,7 +37,7 @@ const ConductorPreset& conductor_preset(std::string_view name) {
     std::string known;
     for (const ConductorPreset& p : conductor_presets())
         known += (known.empty() ? "" : ", ") + std::string(p.name);
-    throw Error("--material '" + std::string(name) + "' is not a known conductor; allowed: " + known);
+    throw Error("--metal '" + std::string(name) + "' is not a known conductor; allowed: " + known);
 }
 
 }  // namespace brdflut

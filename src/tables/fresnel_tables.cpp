@@ -174,20 +174,20 @@ private:
 
 PreparedTable prepare_conductor(const TableSettings& s) {
     const FresnelForm form = fresnel_form_from_string(tables::param(s, "fresnel"));
-    const std::string& material = tables::param(s, "material");
-    const std::string& eta_text = tables::param(s, "eta");
-    const std::string& k_text = tables::param(s, "k");
+    const std::string& material = tables::param(s, "metal");
+    const std::string& eta_text = tables::param(s, "metal-eta");
+    const std::string& k_text = tables::param(s, "metal-k");
     const ConductorPreset& preset = conductor_preset(material);
     nlohmann::json model = {{"brdf", "smooth conductor: unpolarized Fresnel reflectance"},
                             {"fresnel", to_string(form)}};
     std::array<double, 3> eta = preset.eta, k = preset.k;
     if (!eta_text.empty() || !k_text.empty()) {
         if (eta_text.empty() || k_text.empty())
-            throw Error(std::string("table 'fresnel_conductor': --") + (eta_text.empty() ? "k" : "eta") +
-                        " was given without --" + (eta_text.empty() ? "eta" : "k") +
-                        "; allowed: both --eta r,g,b and --k r,g,b, or neither (use --material)");
-        eta = parse_rgb("eta", eta_text, 0.0, true);
-        k = parse_rgb("k", k_text, 0.0, false);
+            throw Error(std::string("table 'fresnel_conductor': --") + (eta_text.empty() ? "metal-k" : "metal-eta") +
+                        " was given without --" + (eta_text.empty() ? "metal-eta" : "metal-k") +
+                        "; allowed: both --metal-eta r,g,b and --metal-k r,g,b, or neither (use --metal)");
+        eta = parse_rgb("metal-eta", eta_text, 0.0, true);
+        k = parse_rgb("metal-k", k_text, 0.0, false);
         model["material"] = "custom";
     } else {
         model["material"] = material;
@@ -309,15 +309,15 @@ void register_fresnel_family(FamilyEntries& family) {
         d.description = "Conductor Fresnel reflectance F(mu) per channel for a metal preset or an "
                         "explicit complex index";
         d.axes = {cos_theta_axis()};
-        d.channels = {"F at 650 nm (preset) or of --eta/--k first value",
-                      "F at 550 nm (preset) or of --eta/--k second value",
-                      "F at 450 nm (preset) or of --eta/--k third value"};
+        d.channels = {"F at 650 nm (preset) or of --metal-eta/--metal-k first value",
+                      "F at 550 nm (preset) or of --metal-eta/--metal-k second value",
+                      "F at 450 nm (preset) or of --metal-eta/--metal-k third value"};
         d.options = {
-            {"material", "conductor: metal preset (optical constants at 650, 550, 450 nm)", "gold",
+            {"metal", "metal preset of the conductor (optical constants at 650, 550, 450 nm)", "gold",
              preset_names()},
-            {"eta", "conductor: real part of the index per channel, r,g,b (with --k; overrides --material)",
-             "", {}},
-            {"k", "conductor: extinction coefficient per channel, r,g,b (with --eta)", "", {}},
+            {"metal-eta",
+             "real part of the conductor's index per channel, r,g,b (with --metal-k; overrides --metal)", "", {}},
+            {"metal-k", "extinction coefficient of the conductor per channel, r,g,b (with --metal-eta)", "", {}},
             fresnel_option()};
         d.prepare = prepare_conductor;
         d.checks = {

@@ -27,14 +27,6 @@ const char* kQuadratureRule =
     "value: QUADPACK estimate plus the integrated inner estimates";
 const char* kMcSampler = "GGX visible normals (Heitz 2018)";
 
-ModelOption visibility_option() {
-    return {"visibility",
-            "shadowing-masking term: height_correlated Smith G2 (Heitz 2014), separable "
-            "G1(o) G1(i) or schlick_smith (k = alpha/2, Karis 2013)",
-            "height_correlated",
-            {"height_correlated", "separable", "schlick_smith"}};
-}
-
 nlohmann::json ggx_model(Visibility vis) {
     return {{"brdf", "GGX microfacet, single scattering"},
             {"distribution", "ggx"},
@@ -98,7 +90,7 @@ TableDefinition make(Kind kind, std::string id, std::string description,
     d.description = std::move(description);
     d.axes = std::move(axes);
     d.channels = std::move(channels);
-    d.options = {visibility_option()};
+    d.options = {tables::visibility_option()};
     d.supports_monte_carlo = true;
     d.prepare = [kind](const TableSettings& s) {
         const Visibility vis = visibility_from_string(tables::param(s, "visibility"));

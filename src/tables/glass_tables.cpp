@@ -28,7 +28,8 @@ const char* kQuadratureRule =
     "then c = wo.h by adaptive Gauss-Kronrod (15,31) split at sin(theta_h) and the critical c, E_T "
     "and E_R outside over c by (15,31), then the same x split at sin(theta_h) = c (E_R's shared "
     "between the indices of one alpha), each then over the azimuth of "
-    "wo about h in tan(psi/4) by adaptive Gauss-Kronrod (7,15) on its closed-form domain (E_R on "
+    "wo about h in tan(psi/4) by adaptive Gauss-Kronrod ((7,15) for E_R, (15,31) for E_T) on its "
+    "closed-form domain (E_R on "
     "half of it, the integrand even about pi/2); E_T avg inside by reciprocity from outside, "
     "E_T(1/n) = E_T(n) / n^2; error per value: QUADPACK estimate plus the integrated inner "
     "estimates";
@@ -40,14 +41,6 @@ const char* kMcSampler =
 }  // namespace
 
 namespace tables {
-
-ModelOption glass_visibility_option() {
-    return {"visibility",
-            "shadowing-masking term: height_correlated 1/(1 + Lambda(o) + Lambda(i)) (Heitz 2014, "
-            "as Cycles) or separable G1(o) G1(i) (Walter 2007), Lambda(i) of |cos(theta_i)|",
-            "height_correlated",
-            {"height_correlated", "separable"}};
-}
 
 nlohmann::json glass_model(Visibility vis, bool inside) {
     return {{"bsdf", "GGX rough dielectric (Walter et al. 2007), single scattering"},
@@ -133,7 +126,7 @@ TableDefinition make(Kind kind, bool inside, std::string id, std::string descrip
     d.channels = {"E_R: " + avg + "integral of f_r |cos(theta_i)| dw_i over the near hemisphere",
                   "E_T: " + avg + "integral of f_t |cos(theta_i)| dw_i over the far hemisphere (energy)",
                   "E_R + E_T"};
-    d.options = {tables::glass_visibility_option()};
+    d.options = {tables::visibility_option()};
     d.supports_monte_carlo = true;
     d.searched_by_identify = kind != Kind::average;  // see catalogue.h
     d.prepare = [kind, inside](const TableSettings& s) {

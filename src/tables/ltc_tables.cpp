@@ -177,11 +177,6 @@ std::string rule(LtcLobeKind kind) {
 
 const char* kNormRule = "no fit: exact integrals (n0, n1) and the closed-form sphere form factor";
 
-ModelOption visibility_option() {
-    return {"visibility", "shadowing-masking term of the fitted GGX lobe: height_correlated Smith G2 or separable",
-            "height_correlated", {"height_correlated", "separable"}};
-}
-
 AxisSpec roughness_axis(LtcLobeKind kind) {
     if (kind == LtcLobeKind::eon)
         return {Axis{"sigma", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
@@ -251,7 +246,8 @@ TableDefinition make(const Entry& e) {
     d.description = e.description;
     d.axes = {roughness_axis(e.lobe), view_axis()};
     d.channels = e.channels;
-    if (e.lobe == LtcLobeKind::ggx) d.options = {visibility_option()};
+    // The fitter's GGX lobe takes the two Smith forms (not Schlick's).
+    if (e.lobe == LtcLobeKind::ggx) d.options = {tables::visibility_option({"height_correlated", "separable"})};
     d.preset = e.preset;
     d.searched_by_identify = false;  // a fit per texel: see catalogue.h
     if (is_matrix(e.layout)) {

@@ -38,6 +38,11 @@ namespace tables {
 AxisSpec cos_theta_axis(int count = 128);
 AxisSpec alpha_axis(int count = 128);
 
+// The GGX shadowing-masking option (`--visibility`), one help text for every
+// table that takes it; `allowed` narrows the values a table accepts.
+ModelOption visibility_option(std::vector<std::string> allowed = {"height_correlated", "separable",
+                                                                  "schlick_smith"});
+
 // The option value of `name`, which validate_settings has checked.
 const std::string& param(const TableSettings& s, const std::string& name);
 
@@ -62,10 +67,9 @@ inline constexpr Tolerances kGlassTolerances{1e-5, 5e-8, 1e-10};
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol);
 nlohmann::json monte_carlo_method(const std::string& sampler, const TableSettings& s);
 
-// The glass tables' index axis, visibility option and model metadata
+// The glass tables' index axis and model metadata
 // (glass_tables.cpp), shared with the engine presets.
 AxisSpec ior_axis(int count = 16);
-ModelOption glass_visibility_option();
 nlohmann::json glass_model(Visibility vis, bool inside);
 // {E_R avg, E_T avg} of index n >= 1 seen from outside (eta = n) or inside
 // (eta = 1/n), for the glass tables and the presets: the outside
