@@ -453,28 +453,28 @@ TEST(FresnelTables, BadSettingsNameTheOptionTheValueAndWhatIsAllowed) {
         std::string id, param, value, expect;
     };
     const Case cases[] = {
-        {"fresnel_conductor", "eta", "1,2", "has 2 value(s)"},
-        {"fresnel_conductor", "eta", "1,2,x", "--eta '1,2,x'"},
-        {"fresnel_conductor", "eta", "0,1,1", "each > 0"},
-        {"fresnel_conductor", "eta", "1,1,1,1", "--eta '1,1,1,1'"},
-        {"fresnel_conductor", "eta", "1,inf,1", "--eta '1,inf,1'"},
-        {"fresnel_conductor", "k", "-1,0,0", "each >= 0"},
-        {"fresnel_conductor", "material", "tin", "allowed: gold, silver"},
+        {"fresnel_conductor", "metal-eta", "1,2", "has 2 value(s)"},
+        {"fresnel_conductor", "metal-eta", "1,2,x", "--metal-eta '1,2,x'"},
+        {"fresnel_conductor", "metal-eta", "0,1,1", "each > 0"},
+        {"fresnel_conductor", "metal-eta", "1,1,1,1", "--metal-eta '1,1,1,1'"},
+        {"fresnel_conductor", "metal-eta", "1,inf,1", "--metal-eta '1,inf,1'"},
+        {"fresnel_conductor", "metal-k", "-1,0,0", "each >= 0"},
+        {"fresnel_conductor", "metal", "tin", "allowed: gold, silver"},
         {"fresnel_conductor", "fresnel", "schlick", "allowed: exact, approx"},
         {"fresnel_conductor_avg", "fresnel", "fast", "allowed: exact, approx"},
     };
     for (const Case& c : cases) {
         TableSettings s = small(c.id, 4);
         s.params[c.param] = c.value;
-        if (c.param == "eta") s.params["k"] = "1,1,1";
-        if (c.param == "k") s.params["eta"] = "1,1,1";
+        if (c.param == "metal-eta") s.params["metal-k"] = "1,1,1";
+        if (c.param == "metal-k") s.params["metal-eta"] = "1,1,1";
         const std::string msg = error_of(c.id, s);
         EXPECT_NE(msg.find(c.expect), std::string::npos) << c.param << "=" << c.value << ": " << msg;
     }
     {
         TableSettings s = small("fresnel_conductor", 4);
-        s.params["k"] = "1,1,1";
-        EXPECT_NE(error_of("fresnel_conductor", s).find("--k was given without --eta"), std::string::npos);
+        s.params["metal-k"] = "1,1,1";
+        EXPECT_NE(error_of("fresnel_conductor", s).find("--metal-k was given without --metal-eta"), std::string::npos);
     }
     for (const std::string id : {"fresnel_dielectric", "fresnel_dielectric_avg", "fresnel_conductor_avg"}) {
         TableSettings s = small(id, 4);
@@ -494,7 +494,7 @@ TEST(FresnelTables, BadSettingsNameTheOptionTheValueAndWhatIsAllowed) {
 
 TEST(FresnelTables, CommandLineAcceptsMaterialsAndRejectsBadIndices) {
     TempDir dir;
-    const auto ok = test::run_cli("generate fresnel_conductor fresnel_dielectric --material platinum "
+    const auto ok = test::run_cli("generate fresnel_conductor fresnel_dielectric --metal platinum "
                                   "--range eta=1.0:2.5 --count eta=16 --size 32 -q -o '" + (dir / "o") + "'",
                                   dir);
     ASSERT_EQ(ok.exit_code, 0) << ok.err;
@@ -505,9 +505,9 @@ TEST(FresnelTables, CommandLineAcceptsMaterialsAndRejectsBadIndices) {
     EXPECT_EQ(d.width, 32);
     EXPECT_EQ(d.height, 16);
     EXPECT_EQ(d.metadata.at("axes")[1].at("max"), 2.5);
-    const auto bad = test::run_cli("generate fresnel_conductor --eta 1,2 --k 1,1,1 -o '" + (dir / "p") + "'", dir);
+    const auto bad = test::run_cli("generate fresnel_conductor --metal-eta 1,2 --metal-k 1,1,1 -o '" + (dir / "p") + "'", dir);
     EXPECT_EQ(bad.exit_code, 2);
-    EXPECT_NE(bad.err.find("--eta '1,2'"), std::string::npos) << bad.err;
+    EXPECT_NE(bad.err.find("--metal-eta '1,2'"), std::string::npos) << bad.err;
     const auto zero = test::run_cli("generate fresnel_dielectric_avg --range eta=0:2 -o '" + (dir / "p") + "'", dir);
     EXPECT_EQ(zero.exit_code, 2);
     EXPECT_NE(zero.err.find("allowed: 0 < eta"), std::string::npos) << zero.err;
