@@ -147,7 +147,8 @@ AxisSpec cos_theta_axis(int count) {
 AxisSpec alpha_axis(int count) {
     return {Axis{"alpha", 0.0, 1.0, count, Placement::center, Warp::square}, 0.0, 1.0,
             "GGX alpha; the square warp makes the rows linear in perceptual roughness "
-            "sqrt(alpha)"};
+            "sqrt(alpha)",
+            "roughness"};
 }
 
 ModelOption visibility_option(std::vector<std::string> allowed) {

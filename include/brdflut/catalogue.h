@@ -30,6 +30,11 @@ struct AxisSpec {
     double domain_min;    // smallest value the model accepts
     double domain_max;    // largest value the model accepts
     std::string meaning;  // e.g. "cos(theta_o), cosine of the view angle"
+    // The names of the square root and of the square of the parameter, where
+    // engines index by either (GGX alpha = roughness^2): `identify` names a
+    // grid uniform in the other one.
+    std::string root_name = {};
+    std::string square_name = {};
 };
 
 // Values and estimated absolute errors of one texel's channels, and the

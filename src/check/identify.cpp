@@ -424,10 +424,12 @@ std::vector<std::string> describe_findings(const LutDescription& d) {
                           shortest(da.min) + ", " + shortest(da.max) + "]");
         if (a.warp != da.warp || reversed) {
             std::string line = role + " uniform in " + uniform_in(a) + " (warp " + std::string(to_string(a.warp)) + ")";
-            if (a.name == "alpha" && da.warp == Warp::square && a.warp == Warp::linear)
-                line = "linear in alpha where the table is indexed by roughness (alpha = r^2): " + line;
-            else if (a.name == "roughness" && da.warp == Warp::linear && a.warp == Warp::sqrt)
-                line = "linear in alpha (= roughness^2) where the table is indexed by roughness: " + line;
+            if (!spec->root_name.empty() && da.warp == Warp::square && a.warp == Warp::linear)
+                line = "linear in " + a.name + " where the table is indexed by " + spec->root_name + " (" + a.name +
+                       " = " + spec->root_name + "^2): " + line;
+            else if (!spec->square_name.empty() && da.warp == Warp::linear && a.warp == Warp::sqrt)
+                line = "linear in " + spec->square_name + " (= " + a.name + "^2) where the table is indexed by " +
+                       a.name + ": " + line;
             else if (a.warp != da.warp)
                 line += ", where the table's default is uniform in " + uniform_in(da);
             out.push_back(line);

@@ -45,10 +45,10 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
     int ir = -1, imu = -1;
     for (std::size_t i = 0; i < axes.size(); ++i) {
         if (axes[i].name == d.def->axes[0].axis.name) ir = static_cast<int>(i);  // roughness (EON: sigma)
-        if (axes[i].name == "cos_theta") imu = static_cast<int>(i);
+        if (axes[i].name == d.def->axes[1].axis.name) imu = static_cast<int>(i);  // the view cosine
     }
     if (ir < 0 || imu < 0 || axes.size() != 2)
-        throw Error("an LTC table has the axes " + d.def->axes[0].axis.name + " and cos_theta");
+        throw Error("an LTC table has the axes " + d.def->axes[0].axis.name + " and " + d.def->axes[1].axis.name);
     const auto vis_it = d.settings.params.find("visibility");
     const Visibility vis =
         visibility_from_string(vis_it == d.settings.params.end() ? "height_correlated" : vis_it->second);

@@ -60,7 +60,8 @@ double clearcoat_average_over_mu(double gloss) {
 void register_disney_family(FamilyEntries& family) {
     std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
-    const AxisSpec roughness = unit_axis("roughness", "perceptual roughness r (alpha = r^2)");
+    AxisSpec roughness = unit_axis("roughness", "perceptual roughness r (alpha = r^2)");
+    roughness.square_name = "alpha";
     const AxisSpec gloss =
         unit_axis("clearcoat_gloss", "clearcoat gloss g: GTR1 alpha = mix(0.1, 0.001, g)");
     const nlohmann::json base = {{"paper", "Burley 2012, Physically-Based Shading at Disney"},

@@ -183,7 +183,8 @@ AxisSpec roughness_axis(LtcLobeKind kind) {
                 "EON (Fujii/OpenPBR) roughness sigma in [0, 1]"};
     return {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
             kind == LtcLobeKind::ggx ? "perceptual roughness r; GGX alpha = max(r^2, 1e-5)"
-                                     : "perceptual roughness r; Charlie alpha = max(r^2, 0.01)"};
+                                     : "perceptual roughness r; Charlie alpha = max(r^2, 0.01)",
+            "", "alpha"};
 }
 
 // Rows uniform in sqrt(1 - cos theta): cos_theta from 1 down to 0, squared

@@ -166,7 +166,7 @@ AxisSpec cos_theta(int count, Placement placement, Warp warp = Warp::linear) {
 
 AxisSpec roughness(int count, Placement placement) {
     return {Axis{"roughness", 0.0, 1.0, count, placement, Warp::linear}, 0.0, 1.0,
-            "perceptual roughness r; GGX (and Charlie) alpha = r^2"};
+            "perceptual roughness r; GGX (and Charlie) alpha = r^2", "", "alpha"};
 }
 
 AxisSpec alpha_sqrt_linear(int count) {
