@@ -9,13 +9,17 @@
 
 namespace brdflut {
 
+// Every src/tables/NAME_tables.cpp, as CMakeLists.txt lists them.
+#define BRDFLUT_FAMILY(name) void register_##name##_family(FamilyEntries& out);
+#include "families.inc"
+#undef BRDFLUT_FAMILY
+
 const FamilyEntries& families() {
     static const FamilyEntries all = [] {
         FamilyEntries f;
-        for (auto* add : {register_ggx_family, register_fresnel_family, register_dipole_family,
-                          register_disney_family, register_oren_nayar_family, register_sheen_family,
-                          register_glass_family, register_preset_family, register_ltc_family})
-            add(f);
+#define BRDFLUT_FAMILY(name) register_##name##_family(f);
+#include "families.inc"
+#undef BRDFLUT_FAMILY
         return f;
     }();
     return all;

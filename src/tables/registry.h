@@ -17,15 +17,10 @@ struct FamilyEntries {
     std::vector<FurnaceModel> furnace_models;
 };
 
-void register_ggx_family(FamilyEntries& out);
-void register_fresnel_family(FamilyEntries& out);
-void register_dipole_family(FamilyEntries& out);
-void register_disney_family(FamilyEntries& out);
-void register_oren_nayar_family(FamilyEntries& out);
-void register_sheen_family(FamilyEntries& out);
-void register_glass_family(FamilyEntries& out);
-void register_preset_family(FamilyEntries& out);
-void register_ltc_family(FamilyEntries& out);
+// A family file src/tables/NAME_tables.cpp defines
+//   void register_NAME_family(FamilyEntries& out);
+// which adds its entries; the build finds the file and the catalogue calls
+// it (CMakeLists.txt, families.inc).
 
 // Every family's entries, registered once (catalogue() and furnace_models()
 // read them).
