@@ -13,6 +13,7 @@ const std::vector<TableDefinition>& catalogue() {
     static const std::vector<TableDefinition> all = [] {
         std::vector<TableDefinition> v;
         register_ggx_tables(v);
+        register_beckmann_tables(v);
         register_fresnel_tables(v);
         register_dipole_tables(v);
         register_disney_tables(v);

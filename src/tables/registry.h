@@ -6,10 +6,12 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
+#include "brdflut/verify.h"
 
 namespace brdflut {
 
 void register_ggx_tables(std::vector<TableDefinition>& out);
+void register_beckmann_tables(std::vector<TableDefinition>& out);
 void register_fresnel_tables(std::vector<TableDefinition>& out);
 void register_dipole_tables(std::vector<TableDefinition>& out);
 void register_disney_tables(std::vector<TableDefinition>& out);
@@ -18,6 +20,10 @@ void register_sheen_tables(std::vector<TableDefinition>& out);
 void register_glass_tables(std::vector<TableDefinition>& out);
 void register_preset_tables(std::vector<TableDefinition>& out);
 void register_ltc_tables(std::vector<TableDefinition>& out);
+
+// The independent checks of the Beckmann tables (beckmann_tables.cpp), empty
+// for other ids.
+std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id);
 
 // Helpers shared by the table families.
 namespace tables {
