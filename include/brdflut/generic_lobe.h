@@ -51,7 +51,7 @@
 // grazing wo and a wi next to its mirror direction is a difference of
 // components near 1). The error estimate includes 2^-52 / (w a) times each
 // moment's size for it. For a microfacet lobe (w = 2 alpha, a = mu_o +
-// alpha) that keeps the 1e-7 target for alpha >= 1e-6 at mu_o >= 1/256 and,
+// alpha) that keeps the 1e-7 target for alpha >= 2e-6 at mu_o >= 1/256 and,
 // at exactly grazing view (mu_o = 0), for alpha >= 5e-5; the quadrature
 // itself converges for widths down to 1e-12 (its nodes are placed relative
 // to w).

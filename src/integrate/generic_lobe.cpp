@@ -46,6 +46,12 @@ struct Frame {
     double theta_end = kPi;
     bool hemisphere = true;
     bool has_peak = false;
+    // Over the sphere: the polar position of wi = -wo, where the half vector
+    // is undefined and f has a direction-dependent limit (theta_star < 0:
+    // none).
+    double theta_star = -1.0, psi_star = 0.0;
+    // Relative error of f from the rounding of the directions (see moments_core).
+    double rel_rounding = 0.0;
 };
 
 Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
@@ -71,6 +77,12 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
         fr.e1 = {1.0, 0.0, 0.0};
         fr.e2 = {0.0, 1.0, 0.0};
     }
+    // wi reaches f as a unit vector in double, each component rounded by up
+    // to kDirectionUlp; a lobe of width w and aspect a varies by about that
+    // over w a radians, so f carries a relative error of about kDirectionUlp
+    // / (w a) that no quadrature removes (it shows at grazing view with
+    // alpha below 1e-4, where w a ~ 2 alpha^2). Bounded generously.
+    if (fr.has_peak) fr.rel_rounding = 2.0 * kDirectionUlp / (fr.w * fr.aspect);
     fr.hemisphere = domain == LobeDomain::hemisphere;
     if (fr.hemisphere) {
         fr.theta_a = std::atan2(std::max(fr.p.z, 0.0), ph);
@@ -78,6 +90,9 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
     } else {
         fr.theta_a = kPi;
         fr.theta_end = kPi;
+        const Vec3 d{-fr.wo.x, -fr.wo.y, -fr.wo.z};
+        fr.theta_star = std::acos(std::clamp(dot(fr.p, d), -1.0, 1.0));
+        fr.psi_star = std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)));
     }
     return fr;
 }
@@ -146,18 +161,33 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     opt.rule = KronrodRule::k21;
     opt.controlled = n;
     opt.max_intervals = max_intervals;
-    const detail::Interval<kMaxWeights> first = detail::kronrod_panel<kMaxWeights>(f, 0.0, end, n, opt.rule);
-    double size = 0.0;
-    for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(first.value[k]));
-    const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
-    opt.abs_tol = std::min(wanted, std::max(kMaxInnerRelTol * size, 1e-300));
-    Estimate<kMaxWeights> e;
-    if (first.worst <= opt.abs_tol) {
-        e.value = first.value;
-        e.error = first.error;
-    } else {
-        e = detail::adaptive_from<kMaxWeights>(f, std::vector<detail::Interval<kMaxWeights>>{first}, opt, e);
+    // psi -> psi' (tan(psi') = tan(psi) / rho, both in [0, pi]).
+    auto to_psi1 = [rho](double psi) { return std::atan2(std::sin(psi), rho * std::cos(psi)); };
+    // Start from one panel, or, on the sphere next to the point wi = -wo,
+    // from panels that isolate it (the ring passes within |theta -
+    // theta_star| of it, where f turns over an arc of about that length).
+    std::vector<double> cuts{0.0};
+    if (fr.theta_star >= 0.0 && sin_t > 0.0) {
+        const double half = 2.0 * std::abs(theta - fr.theta_star) / sin_t;
+        if (half < 0.25 * kPi)
+            for (double psi : {fr.psi_star - half, fr.psi_star + half}) {
+                const double v = to_psi1(psi);
+                if (psi > 0.0 && psi < kPi && v > cuts.back() && v < end) cuts.push_back(v);
+            }
     }
+    cuts.push_back(end);
+    std::vector<detail::Interval<kMaxWeights>> heap;
+    double size = 0.0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        heap.push_back(detail::kronrod_panel<kMaxWeights>(f, cuts[i], cuts[i + 1], n, opt.rule));
+        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(heap.back().value[k]));
+    }
+    const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
+    // Never below what the rounding of f lets the rule resolve.
+    opt.abs_tol = std::max(std::min(wanted, std::max(kMaxInnerRelTol * size, 1e-300)), 4.0 * fr.rel_rounding * size);
+    Estimate<kMaxWeights> e;
+    e.evaluations = 0;
+    e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
     for (std::size_t k = 0; k < n; ++k) {
         out[k] = 2.0 * e.value[k];
         out[kMaxWeights] += 2.0 * e.error[k];
@@ -178,12 +208,9 @@ struct EndMap {
     }
 };
 
-Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const MomentWeight* weights, std::size_t n,
-                                   const GenericOptions& opt) {
+Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, const MomentWeight* weights,
+                                   std::size_t n, const GenericOptions& opt) {
     Estimate<kMaxWeights> out;
-    if (n == 0) return out;
-    mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, kGenericGrazingMu, 1.0);
-    const Frame fr = make_frame(lobe, mu_o, opt.domain);
 
     // Break points of theta: the horizon clip, the width, the kinks.
     struct Point {
@@ -195,6 +222,7 @@ Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const M
         if (t > 0.0 && t < fr.theta_end) pts.push_back({t, kink});
     };
     if (fr.hemisphere) add_point(fr.theta_a, true);
+    if (fr.theta_star >= 0.0) add_point(fr.theta_star, true);
     add_point(fr.w, false);
     for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
     std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.theta < b.theta; });
@@ -248,16 +276,36 @@ Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const M
             out.error[k] += e.error[k] + e.value[kMaxWeights];
         }
     }
-    // wi reaches f as a unit vector in double, each component rounded by up
-    // to kDirectionUlp; a lobe of width w and aspect a varies by about that
-    // over w a radians, so f carries a relative error of about kDirectionUlp
-    // / (w a) that no quadrature removes (it shows at grazing view with
-    // alpha below 1e-4, where w a ~ 2 alpha^2). Bounded generously here.
-    if (fr.has_peak) {
-        const double rel = 2.0 * kDirectionUlp / (fr.w * fr.aspect);
-        for (std::size_t k = 0; k < n; ++k) out.error[k] += rel * std::abs(out.value[k]);
-    }
     out.evaluations = evaluations;
+    return out;
+}
+
+Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const MomentWeight* weights, std::size_t n,
+                                   const GenericOptions& opt) {
+    if (n == 0) return {};
+    mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, kGenericGrazingMu, 1.0);
+    const Frame fr = make_frame(lobe, mu_o, opt.domain);
+    Estimate<kMaxWeights> out;
+    if (fr.rel_rounding > 0.1 * opt.abs_tol) {
+        // The rounding of f may lie above the tolerance: find the moments'
+        // size at a loose tolerance, and ask no more than the rounding allows.
+        GenericOptions loose = opt;
+        loose.abs_tol = std::max(opt.abs_tol, 1e-6);
+        out = moments_pass(lobe, fr, weights, n, loose);
+        double size = 0.0;
+        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(out.value[k]));
+        const double tol = std::max(opt.abs_tol, 2.0 * fr.rel_rounding * size);
+        if (tol < loose.abs_tol) {
+            GenericOptions tight = opt;
+            tight.abs_tol = tol;
+            const int spent = out.evaluations;
+            out = moments_pass(lobe, fr, weights, n, tight);
+            out.evaluations += spent;
+        }
+    } else {
+        out = moments_pass(lobe, fr, weights, n, opt);
+    }
+    for (std::size_t k = 0; k < n; ++k) out.error[k] += fr.rel_rounding * std::abs(out.value[k]);
     return out;
 }
 
