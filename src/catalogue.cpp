@@ -157,9 +157,10 @@ AxisSpec alpha_axis(int count) {
 
 ModelOption visibility_option(std::vector<std::string> allowed) {
     return {"visibility",
-            "GGX shadowing-masking term: height_correlated Smith G2 = 1/(1 + Lambda(o) + Lambda(i)) (Heitz "
-            "2014), separable G1(o) G1(i), or schlick_smith G1(mu) = mu/(mu (1 - k) + k), k = alpha/2 (Karis "
-            "2013); transmission takes Lambda of |cos(theta_i)|",
+            "microfacet shadowing-masking term: height_correlated Smith G2 = 1/(1 + Lambda(o) + Lambda(i)) "
+            "(Heitz 2014), separable G1(o) G1(i), or schlick_smith G1(mu) = mu/(mu (1 - k) + k) with k = "
+            "alpha/2 for GGX (Karis 2013) and alpha sqrt(2/pi) for Beckmann (Schlick 1994); transmission "
+            "takes Lambda of |cos(theta_i)|",
             "height_correlated", std::move(allowed)};
 }
 

@@ -1,0 +1,154 @@
+// Directional moments of any isotropic reflection lobe, from its BRDF alone.
+//
+// A lobe is declared by f(wo, wi) (cosine not included) and, optionally, by
+// hints on its shape: the direction where it peaks (the mirror direction of
+// a glossy lobe), its angular width there, how much narrower it is across
+// the plane of the peak and the normal, and the polar angles about the peak
+// where f has a kink. From that alone this file computes, with no numerics
+// specific to the lobe:
+//
+//   M_k(mu_o) = integral over wi.z > 0 of f(wo, wi) w_k(wo.h) cos(theta_i) dw_i
+//
+// for weights w_k of c = wo.h (h the half vector of wo and wi), for example
+// 1, (1 - c)^5 and 1 - (1 - c)^5 (the split sums); the directional albedo
+// (weight 1); its average E_avg = 2 * integral of E(mu) mu dmu; and Monte
+// Carlo estimates of the same, by the lobe's own sampler or by cosine-weighted
+// sampling.
+//
+// Quadrature. wi is written in polar coordinates (theta, psi) about the peak
+// p: wi = cos(theta) p + sin(theta) (cos(psi) e1 + sin(psi) e2), e1 in the
+// plane of p and the normal (pointing up), e2 horizontal. Then
+//
+//   wi.z = cos(theta) p.z + sin(theta) cos(psi) e1.z,
+//
+// so the upper hemisphere is cos(psi) > -cos(theta) p.z / (sin(theta) e1.z):
+// every psi for theta <= theta_a = asin(p.z) (the peak's elevation), a
+// clipped range [0, psi_max] for theta_a < theta < pi - theta_a, none beyond.
+// The clip is applied analytically, so the psi integrand is smooth on its
+// range. The theta axis is split at theta_a, at the width w and at every
+// declared kink; pieces below w are integrated in s = theta^2 (uniform in
+// area near the peak), pieces above it in ln(theta) (so that a lobe of width
+// w, or its tail, takes the same number of nodes whatever w is); an end at
+// the horizon clip or at a kink is flattened by a polynomial change of
+// variable (the psi integral has a (theta - theta_a)^(3/2) kink there). The
+// azimuth is integrated in psi' with tan(psi) = rho tan(psi'), rho(theta) =
+// clamp(aspect w / theta, aspect, 1): an elongated lobe (a glossy lobe at
+// grazing view is about mu_o + alpha times narrower across the plane of
+// incidence than in it) is then a feature of width ~1 in psi'. Both levels
+// use adaptive Gauss-Kronrod; each inner integral gets the tolerance its
+// outer weight requires, and its error estimate is integrated along with
+// the values, so the reported error (QUADPACK estimate of the outer rule
+// plus the integrated inner estimates) covers both levels.
+//
+// Requirements on the lobe: f is even in wi.y for wo in the x-z plane (an
+// isotropic BRDF), the peak lies in the x-z plane, f is finite and
+// thread-safe (const, no shared state). Every computation is deterministic:
+// the same arguments give the same bits whatever thread calls.
+//
+// Rounding of the directions: wi reaches f as a unit vector in double, so
+// near a peak of width w and aspect a (hints below) f carries a relative
+// error of about 2^-53 / (w a) whatever the rule does (the half vector of a
+// grazing wo and a wi next to its mirror direction is a difference of
+// components near 1). The error estimate includes 2^-52 / (w a) times each
+// moment's size for it. For a microfacet lobe (w = 2 alpha, a = mu_o +
+// alpha) that keeps the 1e-7 target for alpha >= 2e-6 at mu_o >= 1/256 and,
+// at exactly grazing view (mu_o = 0), for alpha >= 5e-5; the quadrature
+// itself converges for widths down to 1e-12 (its nodes are placed relative
+// to w).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "brdflut/math.h"
+#include "brdflut/quadrature.h"
+
+namespace brdflut {
+
+// The shape of a lobe seen from one view direction wo.
+struct LobeHints {
+    // Unit direction where the lobe peaks (upper hemisphere, in the x-z
+    // plane); without a peak the polar coordinates are taken about the
+    // normal with width 1.
+    bool has_peak = false;
+    Vec3 peak{0.0, 0.0, 1.0};
+    // Angular scale (radians) of the peak in the plane of the peak and the
+    // normal (e.g. 2 alpha for a microfacet lobe: wi turns twice as far as
+    // the half vector). Clamped to [1e-12, 1].
+    double width = 1.0;
+    // Width across that plane over the width in it, in (0, 1].
+    double aspect = 1.0;
+    // Polar angles about the peak (radians) where f has a kink or a jump.
+    std::vector<double> kinks;
+};
+
+// A direction drawn by a lobe's sampler and its density (per solid angle).
+struct LobeSample {
+    Vec3 wi;
+    double pdf = 0.0;  // 0: no sample (the draw counts as a zero)
+};
+
+class GenericLobe {
+public:
+    virtual ~GenericLobe() = default;
+    // The BRDF without the cosine, for unit wo (wo.z > 0, wo.y = 0) and wi.
+    virtual double f(const Vec3& wo, const Vec3& wi) const = 0;
+    virtual LobeHints hints(const Vec3& /*wo*/) const { return {}; }
+    // An importance sampler (optional): its density must be positive
+    // wherever f is, so that the Monte Carlo estimate is unbiased.
+    virtual bool has_sampler() const { return false; }
+    virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
+};
+
+// A weight of the moments as a function of c = wo.h.
+using MomentWeight = double (*)(double c);
+double weight_one(double c);                   // 1
+double weight_schlick(double c);               // (1 - c)^5
+double weight_one_minus_schlick(double c);     // 1 - (1 - c)^5
+// The split-sum weights: {1 - (1 - c)^5, (1 - c)^5}.
+inline constexpr std::array<MomentWeight, 2> kSplitSumWeights = {weight_one_minus_schlick, weight_schlick};
+
+// What is integrated over which directions.
+enum class LobeDomain {
+    hemisphere,  // f w_k cos(theta_i) over wi.z > 0 (the moments)
+    sphere,      // f w_k over every wi, no cosine (for identities such as the weak white furnace)
+};
+
+// At mu_o = 0 the moments are evaluated at this view cosine (their limit).
+inline constexpr double kGenericGrazingMu = 1e-16;
+
+struct GenericOptions {
+    double abs_tol = 1e-9;  // per moment
+    LobeDomain domain = LobeDomain::hemisphere;
+    int max_intervals = 400;  // per adaptive integral
+};
+
+// The moments at view cosine mu_o (wo = (sqrt(1 - mu_o^2), 0, mu_o)), up to
+// four weights: value, estimated absolute error, evaluations of f.
+template <std::size_t N>
+Estimate<N> generic_moments(const GenericLobe& lobe, double mu_o, const std::array<MomentWeight, N>& weights,
+                            const GenericOptions& opt = {});
+// The directional albedo: the moment of weight 1.
+Estimate<1> generic_albedo(const GenericLobe& lobe, double mu_o, const GenericOptions& opt = {});
+// 2 * integral over mu in [0, 1] of M_k(mu) mu dmu, adaptive Gauss-Kronrod
+// over mu (the view cosines below the lobe's width at normal view in
+// mu = b u^2, above in ln(mu)), each M_k(mu) to the tolerance its weight
+// needs; the error adds the outer estimate and the integrated inner ones.
+template <std::size_t N>
+Estimate<N> generic_moment_average(const GenericLobe& lobe, const std::array<MomentWeight, N>& weights,
+                                   const GenericOptions& opt = {});
+Estimate<1> generic_albedo_average(const GenericLobe& lobe, const GenericOptions& opt = {});
+
+// Monte Carlo: wi from the lobe's sampler if it has one, else cosine
+// weighted; value = the mean of f w_k cos / pdf, error = its standard error.
+// Seeded and reproducible.
+template <std::size_t N>
+Estimate<N> generic_moments_mc(const GenericLobe& lobe, double mu_o, const std::array<MomentWeight, N>& weights,
+                               long long samples, std::uint64_t seed);
+// The average: mu drawn with density 2 mu, then one wi per mu.
+template <std::size_t N>
+Estimate<N> generic_moment_average_mc(const GenericLobe& lobe, const std::array<MomentWeight, N>& weights,
+                                      long long samples, std::uint64_t seed);
+
+}  // namespace brdflut

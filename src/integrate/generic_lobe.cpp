@@ -1,0 +1,467 @@
+// The generic lobe path (generic_lobe.h): nested adaptive Gauss-Kronrod in
+// polar coordinates about the lobe's peak, and Monte Carlo.
+#include "brdflut/generic_lobe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "brdflut/random.h"
+
+namespace brdflut {
+
+double weight_one(double) { return 1.0; }
+double weight_schlick(double c) { return schlick_weight(c); }
+double weight_one_minus_schlick(double c) { return 1.0 - schlick_weight(c); }
+
+namespace {
+
+constexpr std::size_t kMaxWeights = 4;
+// Four moments and, last, the integrated error estimate of the inner rule.
+using Row = std::array<double, kMaxWeights + 1>;
+
+// A piece in ln(theta) is integrated from panels of at most this many units
+// (each then bisected as needed): the integrand has complex singularities
+// about one unit off the real axis near the lobe's width, so a long range
+// would be bisected down to about that anyway.
+constexpr double kLnPanelWidth = 2.0;
+// The loosest tolerance of an inner integral relative to its size (its first
+// panel's value): far in the tail, where the outer weight is tiny, the
+// budget alone would accept a panel that has resolved nothing.
+constexpr double kMaxInnerRelTol = 1e-6;
+// The range of E_avg in ln(mu) is integrated from panels of at most this width.
+constexpr double kLnMuPanelWidth = 3.0;
+// The loosest tolerance of a moment inside E_avg.
+constexpr double kMaxNestedTol = 1e-5;
+// Half the spacing of doubles in [0.5, 1): the rounding of a unit vector's
+// largest components.
+constexpr double kDirectionUlp = 0x1.0p-53;
+
+// The view direction, the lobe's frame and its shape.
+struct Frame {
+    Vec3 wo;
+    Vec3 p, e1, e2;  // peak; up in the plane of p and the normal; horizontal
+    double w = 1.0, aspect = 1.0;
+    double theta_a = 0.0;  // below: whole rings above the horizon
+    double theta_end = kPi;
+    bool hemisphere = true;
+    bool has_peak = false;
+    // Over the sphere: the polar position of wi = -wo, where the half vector
+    // is undefined and f has a direction-dependent limit (theta_star < 0:
+    // none).
+    double theta_star = -1.0, psi_star = 0.0;
+    // Relative error of f from the rounding of the directions (see moments_core).
+    double rel_rounding = 0.0;
+};
+
+Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
+    Frame fr;
+    const double sin_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
+    fr.wo = {sin_o, 0.0, mu_o};
+    const LobeHints h = lobe.hints(fr.wo);
+    fr.has_peak = h.has_peak;
+    if (h.has_peak) {
+        fr.p = h.peak;
+        fr.w = std::clamp(h.width, 1e-12, 1.0);
+        fr.aspect = std::clamp(h.aspect, 1e-12, 1.0);
+    } else {
+        fr.p = {0.0, 0.0, 1.0};
+    }
+    const double len = std::sqrt(dot(fr.p, fr.p));
+    fr.p = {fr.p.x / len, fr.p.y / len, fr.p.z / len};
+    const double ph = std::sqrt(fr.p.x * fr.p.x + fr.p.y * fr.p.y);
+    if (ph > 0.0) {
+        fr.e1 = {-fr.p.z * fr.p.x / ph, -fr.p.z * fr.p.y / ph, ph};
+        fr.e2 = {-fr.p.y / ph, fr.p.x / ph, 0.0};
+    } else {
+        fr.e1 = {1.0, 0.0, 0.0};
+        fr.e2 = {0.0, 1.0, 0.0};
+    }
+    // wi reaches f as a unit vector in double, each component rounded by up
+    // to kDirectionUlp; a lobe of width w and aspect a varies by about that
+    // over w a radians, so f carries a relative error of about kDirectionUlp
+    // / (w a) that no quadrature removes (it shows at grazing view with
+    // alpha below 1e-4, where w a ~ 2 alpha^2). Bounded generously.
+    if (fr.has_peak) fr.rel_rounding = 2.0 * kDirectionUlp / (fr.w * fr.aspect);
+    fr.hemisphere = domain == LobeDomain::hemisphere;
+    if (fr.hemisphere) {
+        fr.theta_a = std::atan2(std::max(fr.p.z, 0.0), ph);
+        fr.theta_end = kPi - fr.theta_a;
+    } else {
+        fr.theta_a = kPi;
+        fr.theta_end = kPi;
+        const Vec3 d{-fr.wo.x, -fr.wo.y, -fr.wo.z};
+        fr.theta_star = std::acos(std::clamp(dot(fr.p, d), -1.0, 1.0));
+        fr.psi_star = std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)));
+    }
+    return fr;
+}
+
+// The psi' integrand at one polar angle: f w_k (cos) dpsi/dpsi', channels of
+// the weights given (the rest 0).
+struct RingIntegrand {
+    const GenericLobe& lobe;
+    const Frame& fr;
+    const MomentWeight* weights;
+    std::size_t n;
+    double cos_t, sin_t, rho;
+    int* evaluations;
+
+    std::array<double, kMaxWeights> operator()(double psi1) const {
+        std::array<double, kMaxWeights> y{};
+        const double cs = std::cos(psi1), sn = std::sin(psi1);
+        const double q2 = cs * cs + rho * rho * (sn * sn);
+        const double q = std::sqrt(q2);
+        const double cp = cs / q, sp = rho * sn / q;
+        const double jac = rho / q2;
+        const double a = sin_t * cp, b = sin_t * sp;
+        const Vec3 wi{cos_t * fr.p.x + a * fr.e1.x + b * fr.e2.x, cos_t * fr.p.y + a * fr.e1.y + b * fr.e2.y,
+                      cos_t * fr.p.z + a * fr.e1.z + b * fr.e2.z};
+        double v;
+        if (fr.hemisphere) {
+            if (!(wi.z > 0.0)) return y;
+            v = lobe.f(fr.wo, wi) * wi.z * jac;
+        } else {
+            v = lobe.f(fr.wo, wi) * jac;
+        }
+        ++*evaluations;
+        if (v == 0.0) return y;
+        const Vec3 h{fr.wo.x + wi.x, fr.wo.y + wi.y, fr.wo.z + wi.z};
+        const double hl = std::sqrt(dot(h, h));
+        const double c = hl > 0.0 ? std::clamp(dot(fr.wo, h) / hl, 0.0, 1.0) : 0.0;
+        for (std::size_t k = 0; k < n; ++k) y[k] = v * weights[k](c);
+        return y;
+    }
+};
+
+// Integral over the ring at polar angle theta (psi in [-psi_max, psi_max],
+// as twice [0, psi_max]) to the absolute tolerance budget / weight, or to
+// kMaxInnerRelTol of its size if that is looser: {moments, error estimate}.
+Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* weights, std::size_t n,
+                  double theta, double budget, double weight, int max_intervals, int* evaluations) {
+    Row out{};
+    const double cos_t = std::cos(theta), sin_t = std::sin(theta);
+    double end = kPi;  // psi' range [0, end]
+    const double rho = std::clamp(fr.aspect * fr.w / std::max(theta, 1e-300), fr.aspect, 1.0);
+    if (fr.hemisphere) {
+        const double up = sin_t * fr.e1.z, base = cos_t * fr.p.z;  // wi.z = base + up cos(psi)
+        if (!(up > 0.0)) {
+            if (!(base > 0.0)) return out;
+        } else {
+            const double c = -base / up;
+            if (c >= 1.0) return out;
+            if (c > -1.0) {
+                const double s = std::sqrt((1.0 - c) * (1.0 + c));
+                end = std::atan2(s, rho * c);  // tan(psi') = tan(psi) / rho
+            }
+        }
+    }
+    const RingIntegrand f{lobe, fr, weights, n, cos_t, sin_t, rho, evaluations};
+    AdaptiveOptions opt;
+    opt.rule = KronrodRule::k21;
+    opt.controlled = n;
+    opt.max_intervals = max_intervals;
+    // psi -> psi' (tan(psi') = tan(psi) / rho, both in [0, pi]).
+    auto to_psi1 = [rho](double psi) { return std::atan2(std::sin(psi), rho * std::cos(psi)); };
+    // Start from one panel, or, on the sphere next to the point wi = -wo,
+    // from panels that isolate it (the ring passes within |theta -
+    // theta_star| of it, where f turns over an arc of about that length).
+    std::vector<double> cuts{0.0};
+    if (fr.theta_star >= 0.0 && sin_t > 0.0) {
+        const double half = 2.0 * std::abs(theta - fr.theta_star) / sin_t;
+        if (half < 0.25 * kPi)
+            for (double psi : {fr.psi_star - half, fr.psi_star + half}) {
+                const double v = to_psi1(psi);
+                if (psi > 0.0 && psi < kPi && v > cuts.back() && v < end) cuts.push_back(v);
+            }
+    }
+    cuts.push_back(end);
+    std::vector<detail::Interval<kMaxWeights>> heap;
+    double size = 0.0;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        heap.push_back(detail::kronrod_panel<kMaxWeights>(f, cuts[i], cuts[i + 1], n, opt.rule));
+        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(heap.back().value[k]));
+    }
+    const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
+    // Never below what the rounding of f lets the rule resolve.
+    opt.abs_tol = std::max(std::min(wanted, std::max(kMaxInnerRelTol * size, 1e-300)), 4.0 * fr.rel_rounding * size);
+    Estimate<kMaxWeights> e;
+    e.evaluations = 0;
+    e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
+    for (std::size_t k = 0; k < n; ++k) {
+        out[k] = 2.0 * e.value[k];
+        out[kMaxWeights] += 2.0 * e.error[k];
+    }
+    return out;
+}
+
+// s in [0, 1] -> [0, 1] with its slope, flat (third order) at the ends marked.
+struct EndMap {
+    bool flat_left, flat_right;
+    std::array<double, 2> operator()(double u) const {
+        const double r = 1.0 - u;
+        if (flat_left && flat_right)  // 10 u^3 - 15 u^4 + 6 u^5
+            return {u * u * u * (10.0 + u * (-15.0 + 6.0 * u)), 30.0 * u * u * r * r};
+        if (flat_left) return {u * u * u, 3.0 * u * u};
+        if (flat_right) return {1.0 - r * r * r, 3.0 * r * r};
+        return {u, 1.0};
+    }
+};
+
+Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, const MomentWeight* weights,
+                                   std::size_t n, const GenericOptions& opt) {
+    Estimate<kMaxWeights> out;
+
+    // Break points of theta: the horizon clip, the width, the kinks.
+    struct Point {
+        double theta;
+        bool kink;
+    };
+    std::vector<Point> pts{{0.0, false}, {fr.theta_end, fr.hemisphere && fr.theta_end < kPi}};
+    auto add_point = [&](double t, bool kink) {
+        if (t > 0.0 && t < fr.theta_end) pts.push_back({t, kink});
+    };
+    if (fr.hemisphere) add_point(fr.theta_a, true);
+    if (fr.theta_star >= 0.0) add_point(fr.theta_star, true);
+    add_point(fr.w, false);
+    for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
+    std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.theta < b.theta; });
+    std::vector<Point> merged;
+    for (const Point& p : pts) {
+        if (!merged.empty() && p.theta <= merged.back().theta * (1.0 + 1e-12)) {
+            merged.back().kink = merged.back().kink || p.kink;
+            continue;
+        }
+        merged.push_back(p);
+    }
+    const std::size_t pieces = merged.size() - 1;
+    if (pieces == 0) return out;
+
+    AdaptiveOptions outer_opt;
+    outer_opt.abs_tol = 0.5 * opt.abs_tol / static_cast<double>(pieces);
+    outer_opt.controlled = n;
+    outer_opt.rule = KronrodRule::k21;
+    outer_opt.max_intervals = opt.max_intervals;
+    const double inner_budget = 0.25 * opt.abs_tol / static_cast<double>(pieces);
+    int evaluations = 0;
+
+    for (std::size_t i = 0; i < pieces; ++i) {
+        const double lo = merged[i].theta, hi = merged[i + 1].theta;
+        const EndMap map{merged[i].kink, merged[i + 1].kink};
+        const bool in_s = hi <= fr.w * (1.0 + 1e-12);  // below the width: s = theta^2
+        const double v0 = in_s ? lo * lo : std::log(lo), v1 = in_s ? hi * hi : std::log(hi);
+        const double len = v1 - v0;
+        auto integrand = [&](double u) -> std::array<double, kMaxWeights + 1> {
+            const std::array<double, 2> m = map(u);
+            const double v = v0 + len * m[0];
+            double theta, dw;  // dw: solid angle per unit v and unit psi
+            if (in_s) {
+                theta = std::sqrt(v);
+                dw = theta > 0.0 ? 0.5 * std::sin(theta) / theta : 0.5;
+            } else {
+                theta = std::exp(v);
+                dw = std::sin(theta) * theta;
+            }
+            const double weight = dw * len * m[1];
+            if (!(weight > 0.0)) return {};
+            Row r = ring_integral(lobe, fr, weights, n, theta, inner_budget, weight, opt.max_intervals, &evaluations);
+            for (double& x : r) x *= weight;
+            return r;
+        };
+        const int panels = in_s ? 1 : std::max(1, static_cast<int>(std::ceil(len / kLnPanelWidth)));
+        const Estimate<kMaxWeights + 1> e = integrate_adaptive_panels<kMaxWeights + 1>(integrand, 0.0, 1.0, panels,
+                                                                                       outer_opt);
+        for (std::size_t k = 0; k < n; ++k) {
+            out.value[k] += e.value[k];
+            out.error[k] += e.error[k] + e.value[kMaxWeights];
+        }
+    }
+    out.evaluations = evaluations;
+    return out;
+}
+
+Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const MomentWeight* weights, std::size_t n,
+                                   const GenericOptions& opt) {
+    if (n == 0) return {};
+    mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, kGenericGrazingMu, 1.0);
+    const Frame fr = make_frame(lobe, mu_o, opt.domain);
+    Estimate<kMaxWeights> out;
+    if (fr.rel_rounding > 0.1 * opt.abs_tol) {
+        // The rounding of f may lie above the tolerance: find the moments'
+        // size at a loose tolerance, and ask no more than the rounding allows.
+        GenericOptions loose = opt;
+        loose.abs_tol = std::max(opt.abs_tol, 1e-6);
+        out = moments_pass(lobe, fr, weights, n, loose);
+        double size = 0.0;
+        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(out.value[k]));
+        const double tol = std::max(opt.abs_tol, 2.0 * fr.rel_rounding * size);
+        if (tol < loose.abs_tol) {
+            GenericOptions tight = opt;
+            tight.abs_tol = tol;
+            const int spent = out.evaluations;
+            out = moments_pass(lobe, fr, weights, n, tight);
+            out.evaluations += spent;
+        }
+    } else {
+        out = moments_pass(lobe, fr, weights, n, opt);
+    }
+    for (std::size_t k = 0; k < n; ++k) out.error[k] += fr.rel_rounding * std::abs(out.value[k]);
+    return out;
+}
+
+Estimate<kMaxWeights> average_core(const GenericLobe& lobe, const MomentWeight* weights, std::size_t n,
+                                   const GenericOptions& opt) {
+    Estimate<kMaxWeights> out;
+    if (n == 0) return out;
+    const LobeHints normal = lobe.hints({0.0, 0.0, 1.0});
+    const double b = normal.has_peak ? std::clamp(normal.width, kGenericGrazingMu, 1.0) : 1.0;
+    AdaptiveOptions aopt;
+    aopt.abs_tol = 0.25 * opt.abs_tol;
+    aopt.controlled = n;
+    aopt.rule = KronrodRule::k21;
+    aopt.max_intervals = opt.max_intervals;
+    // Each M(mu) is computed to the accuracy its weight 2 mu jac needs, so
+    // that the weighted errors integrate to at most 0.25 abs_tol per range.
+    double span = 1.0;
+    auto integrand = [&](double mu, double jac) -> std::array<double, kMaxWeights + 1> {
+        const double w = 2.0 * mu * jac;
+        const double budget = 0.25 * opt.abs_tol / span;
+        GenericOptions inner = opt;
+        inner.abs_tol = w * kMaxNestedTol > budget ? budget / w : kMaxNestedTol;
+        const Estimate<kMaxWeights> m = moments_core(lobe, mu, weights, n, inner);
+        out.evaluations += m.evaluations;
+        std::array<double, kMaxWeights + 1> r{};
+        for (std::size_t k = 0; k < n; ++k) {
+            r[k] = w * m.value[k];
+            r[kMaxWeights] = std::max(r[kMaxWeights], w * m.error[k]);
+        }
+        return r;
+    };
+    auto accumulate = [&](const Estimate<kMaxWeights + 1>& e) {
+        for (std::size_t k = 0; k < n; ++k) {
+            out.value[k] += e.value[k];
+            out.error[k] += e.error[k] + e.value[kMaxWeights];
+        }
+    };
+    accumulate(integrate_adaptive<kMaxWeights + 1>([&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0,
+                                                   1.0, aopt));
+    if (b < 1.0) {
+        span = -std::log(b);
+        accumulate(integrate_adaptive_panels<kMaxWeights + 1>(
+            [&](double v) {
+                const double mu = std::exp(v);
+                return integrand(mu, mu);
+            },
+            std::log(b), 0.0, static_cast<int>(std::ceil(span / kLnMuPanelWidth)), aopt));
+    }
+    return out;
+}
+
+template <std::size_t N>
+Estimate<N> first_channels(const Estimate<kMaxWeights>& e) {
+    Estimate<N> out;
+    for (std::size_t k = 0; k < N; ++k) {
+        out.value[k] = e.value[k];
+        out.error[k] = e.error[k];
+    }
+    out.evaluations = e.evaluations;
+    return out;
+}
+
+// One Monte Carlo draw of f w_k cos / pdf at view cosine mu_o.
+void mc_draw(const GenericLobe& lobe, const Vec3& wo, const MomentWeight* weights, std::size_t n, Rng& rng,
+             double* y) {
+    for (std::size_t k = 0; k < n; ++k) y[k] = 0.0;
+    const double u1 = rng.uniform(), u2 = rng.uniform();
+    Vec3 wi;
+    double pdf;
+    if (lobe.has_sampler()) {
+        const LobeSample s = lobe.sample(wo, u1, u2);
+        wi = s.wi;
+        pdf = s.pdf;
+    } else {
+        const double r = std::sqrt(u1), phi = kTwoPi * u2;
+        wi = {r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - u1)};
+        pdf = wi.z * kInvPi;
+    }
+    if (!(pdf > 0.0) || !(wi.z > 0.0)) return;
+    const double v = lobe.f(wo, wi) * wi.z / pdf;
+    const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+    const double hl = std::sqrt(dot(h, h));
+    const double c = hl > 0.0 ? std::clamp(dot(wo, h) / hl, 0.0, 1.0) : 0.0;
+    for (std::size_t k = 0; k < n; ++k) y[k] = v * weights[k](c);
+}
+
+Vec3 view(double mu_o) {
+    mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, kGenericGrazingMu, 1.0);
+    return {std::sqrt((1.0 - mu_o) * (1.0 + mu_o)), 0.0, mu_o};
+}
+
+}  // namespace
+
+template <std::size_t N>
+Estimate<N> generic_moments(const GenericLobe& lobe, double mu_o, const std::array<MomentWeight, N>& weights,
+                            const GenericOptions& opt) {
+    static_assert(N >= 1 && N <= kMaxWeights);
+    return first_channels<N>(moments_core(lobe, mu_o, weights.data(), N, opt));
+}
+
+Estimate<1> generic_albedo(const GenericLobe& lobe, double mu_o, const GenericOptions& opt) {
+    return generic_moments<1>(lobe, mu_o, {weight_one}, opt);
+}
+
+template <std::size_t N>
+Estimate<N> generic_moment_average(const GenericLobe& lobe, const std::array<MomentWeight, N>& weights,
+                                   const GenericOptions& opt) {
+    static_assert(N >= 1 && N <= kMaxWeights);
+    return first_channels<N>(average_core(lobe, weights.data(), N, opt));
+}
+
+Estimate<1> generic_albedo_average(const GenericLobe& lobe, const GenericOptions& opt) {
+    return generic_moment_average<1>(lobe, {weight_one}, opt);
+}
+
+template <std::size_t N>
+Estimate<N> generic_moments_mc(const GenericLobe& lobe, double mu_o, const std::array<MomentWeight, N>& weights,
+                               long long samples, std::uint64_t seed) {
+    const Vec3 wo = view(mu_o);
+    Rng rng(seed, 11);
+    MeanAccumulator<static_cast<int>(N)> acc;
+    double y[N];
+    for (long long s = 0; s < samples; ++s) {
+        mc_draw(lobe, wo, weights.data(), N, rng, y);
+        acc.add(y);
+    }
+    return acc.estimate();
+}
+
+template <std::size_t N>
+Estimate<N> generic_moment_average_mc(const GenericLobe& lobe, const std::array<MomentWeight, N>& weights,
+                                      long long samples, std::uint64_t seed) {
+    Rng rng(seed, 12);
+    MeanAccumulator<static_cast<int>(N)> acc;
+    double y[N];
+    for (long long s = 0; s < samples; ++s) {
+        const double mu = std::sqrt(1.0 - rng.uniform());  // density 2 mu on (0, 1]
+        mc_draw(lobe, view(mu), weights.data(), N, rng, y);
+        acc.add(y);
+    }
+    return acc.estimate();
+}
+
+#define BRDFLUT_GENERIC_INSTANTIATE(N)                                                                          \
+    template Estimate<N> generic_moments<N>(const GenericLobe&, double, const std::array<MomentWeight, N>&,      \
+                                            const GenericOptions&);                                             \
+    template Estimate<N> generic_moment_average<N>(const GenericLobe&, const std::array<MomentWeight, N>&,      \
+                                                   const GenericOptions&);                                      \
+    template Estimate<N> generic_moments_mc<N>(const GenericLobe&, double, const std::array<MomentWeight, N>&,   \
+                                               long long, std::uint64_t);                                       \
+    template Estimate<N> generic_moment_average_mc<N>(const GenericLobe&, const std::array<MomentWeight, N>&,   \
+                                                      long long, std::uint64_t);
+BRDFLUT_GENERIC_INSTANTIATE(1)
+BRDFLUT_GENERIC_INSTANTIATE(2)
+BRDFLUT_GENERIC_INSTANTIATE(3)
+BRDFLUT_GENERIC_INSTANTIATE(4)
+#undef BRDFLUT_GENERIC_INSTANTIATE
+
+}  // namespace brdflut

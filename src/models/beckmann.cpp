@@ -1,0 +1,56 @@
+#include "brdflut/beckmann.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace brdflut {
+
+double Beckmann::lambda_of_a(double a) {
+    if (!(a > 0.0)) return HUGE_VAL;
+    // Past a = 27 exp(-a^2) and erfc(a) underflow (Lambda < 1e-300).
+    if (a > 27.0) return 0.0;
+    constexpr double kInvSqrtPi = 0.56418958354775628694807945156077259;
+    return 0.5 * (std::exp(-a * a) * kInvSqrtPi / a - std::erfc(a));
+}
+
+double Beckmann::brdf(const Vec3& wo, const Vec3& wi, Visibility vis) const {
+    if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+    const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+    const double t2 = (h.x * h.x + h.y * h.y) / (h.z * h.z);  // tan^2(theta_h)
+    const double c2 = 1.0 / (1.0 + t2);                         // cos^2(theta_h)
+    return D_from_tan2(t2, c2) * G2(wo.z, wi.z, vis) / (4.0 * wo.z * wi.z);
+}
+
+Vec3 Beckmann::sample_normal(double u1, double u2) const {
+    const double t2 = -alpha * alpha * std::log1p(-u1);
+    const double c = 1.0 / std::sqrt(1.0 + t2);
+    const double s = std::sqrt(t2) * c;
+    const double phi = kTwoPi * u2;
+    return {s * std::cos(phi), s * std::sin(phi), c};
+}
+
+}  // namespace brdflut
+
+namespace brdflut {
+
+LobeHints BeckmannLobe::hints(const Vec3& wo) const {
+    LobeHints h;
+    h.has_peak = true;
+    h.peak = {-wo.x, -wo.y, wo.z};
+    h.width = 2.0 * model_.alpha;
+    h.aspect = std::min(1.0, wo.z + model_.alpha);
+    return h;
+}
+
+LobeSample BeckmannLobe::sample(const Vec3& wo, double u1, double u2) const {
+    LobeSample s;
+    const Vec3 m = model_.sample_normal(u1, u2);
+    const double o_m = dot(wo, m);
+    if (!(o_m > 0.0)) return s;
+    s.wi = {2.0 * o_m * m.x - wo.x, 2.0 * o_m * m.y - wo.y, 2.0 * o_m * m.z - wo.z};
+    const double t2 = (m.x * m.x + m.y * m.y) / (m.z * m.z);
+    s.pdf = model_.D_from_tan2(t2, m.z * m.z) * m.z / (4.0 * o_m);
+    return s;
+}
+
+}  // namespace brdflut
