@@ -325,7 +325,7 @@ TEST(BeckmannTables, MonteCarloAgreesWithQuadrature) {
                 EXPECT_LT(mc.error[c], 0.02);
             }
         }
-    const Estimate<1> avg = generic_moment_average_mc<1>(BeckmannLobe(0.4, Visibility::separable), {weight_one},
+    const Estimate<1> avg = generic_moment_average_mc<1>(BeckmannLobe(0.4, Visibility::separable), {kWeightOne},
                                                          20000, 3);
     const TexelValue q = texel("beckmann_albedo_avg", {0.4}, Quality::standard, Visibility::separable);
     EXPECT_NEAR(avg.value[0], q.value[0], 4.0 * avg.error[0] + q.error[0]);

@@ -101,13 +101,25 @@ public:
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
 };
 
-// A weight of the moments as a function of c = wo.h.
-using MomentWeight = double (*)(double c);
-double weight_one(double c);                   // 1
-double weight_schlick(double c);               // (1 - c)^5
-double weight_one_minus_schlick(double c);     // 1 - (1 - c)^5
+// A weight of the moments as a function of c = wo.h and one parameter p:
+// w(c) = f(c, p). The Fresnel factors engines split out of their tables:
+namespace moment_weight {
+double one(double c, double p);                   // 1
+double schlick(double c, double p);               // (1 - c)^5
+double one_minus_schlick(double c, double p);     // 1 - (1 - c)^5
+double schlick_power(double c, double p);         // (1 - c)^p: generalized Schlick
+double f82(double c, double p);                   // c (1 - c)^6: the F82-tint correction (Kutz et al. 2021)
+double dielectric_fresnel(double c, double p);    // exact unpolarized Fresnel reflectance at c, eta = p
+}  // namespace moment_weight
+struct MomentWeight {
+    double (*f)(double c, double p) = moment_weight::one;
+    double p = 0.0;
+    double operator()(double c) const { return f(c, p); }
+};
+inline constexpr MomentWeight kWeightOne{moment_weight::one};
 // The split-sum weights: {1 - (1 - c)^5, (1 - c)^5}.
-inline constexpr std::array<MomentWeight, 2> kSplitSumWeights = {weight_one_minus_schlick, weight_schlick};
+inline constexpr std::array<MomentWeight, 2> kSplitSumWeights = {MomentWeight{moment_weight::one_minus_schlick},
+                                                                 MomentWeight{moment_weight::schlick}};
 
 // What is integrated over which directions.
 enum class LobeDomain {

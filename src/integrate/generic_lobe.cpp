@@ -6,13 +6,20 @@
 #include <cmath>
 #include <vector>
 
+#include "brdflut/fresnel.h"
 #include "brdflut/random.h"
 
 namespace brdflut {
 
-double weight_one(double) { return 1.0; }
-double weight_schlick(double c) { return schlick_weight(c); }
-double weight_one_minus_schlick(double c) { return 1.0 - schlick_weight(c); }
+double moment_weight::one(double, double) { return 1.0; }
+double moment_weight::schlick(double c, double) { return schlick_weight(c); }
+double moment_weight::one_minus_schlick(double c, double) { return 1.0 - schlick_weight(c); }
+double moment_weight::schlick_power(double c, double p) { return std::pow(std::max(1.0 - c, 0.0), p); }
+double moment_weight::f82(double c, double) {
+    const double m = std::max(1.0 - c, 0.0), m2 = m * m;
+    return c * m2 * m2 * m2;
+}
+double moment_weight::dielectric_fresnel(double c, double p) { return fresnel_dielectric(c, p); }
 
 namespace {
 
@@ -407,7 +414,7 @@ Estimate<N> generic_moments(const GenericLobe& lobe, double mu_o, const std::arr
 }
 
 Estimate<1> generic_albedo(const GenericLobe& lobe, double mu_o, const GenericOptions& opt) {
-    return generic_moments<1>(lobe, mu_o, {weight_one}, opt);
+    return generic_moments<1>(lobe, mu_o, {kWeightOne}, opt);
 }
 
 template <std::size_t N>
@@ -418,7 +425,7 @@ Estimate<N> generic_moment_average(const GenericLobe& lobe, const std::array<Mom
 }
 
 Estimate<1> generic_albedo_average(const GenericLobe& lobe, const GenericOptions& opt) {
-    return generic_moment_average<1>(lobe, {weight_one}, opt);
+    return generic_moment_average<1>(lobe, {kWeightOne}, opt);
 }
 
 template <std::size_t N>

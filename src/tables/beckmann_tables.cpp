@@ -119,7 +119,7 @@ public:
             if (!mc) {
                 e = albedo_average(alpha, vis_, abs_tol_);
             } else if (alpha > 0.0) {
-                e = generic_moment_average_mc<1>(BeckmannLobe(std::max(alpha, kMinAlpha), vis_), {weight_one},
+                e = generic_moment_average_mc<1>(BeckmannLobe(std::max(alpha, kMinAlpha), vis_), {kWeightOne},
                                                  samples_, seed);
             } else {
                 e.value[0] = 1.0;

@@ -1,0 +1,104 @@
+// The generic lobe path against the hand-reduced fast paths it stands beside
+// (the Charlie sheen here; GGX in test_beckmann.cpp), and its moment weights.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "brdflut/fresnel.h"
+#include "brdflut/generic_lobe.h"
+#include "brdflut/ggx_integrals.h"
+#include "brdflut/microfacet.h"
+#include "brdflut/sheen.h"
+#include "brdflut/sheen_integrals.h"
+
+using namespace brdflut;
+
+namespace {
+
+// The Charlie sheen with Neubelt's visibility as a generic lobe: no peak
+// (the lobe is a ring toward grazing directions), coordinates about the
+// normal.
+class CharlieLobe final : public GenericLobe {
+public:
+    explicit CharlieLobe(double alpha) : charlie_{alpha} {}
+    double f(const Vec3& wo, const Vec3& wi) const override {
+        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+        const double cos_h = h.z / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
+        return charlie_.D(cos_h) * neubelt_visibility(wo.z, wi.z);
+    }
+
+private:
+    Charlie charlie_;
+};
+
+// GGX (F = 1) from microfacet.h, D from the half vector's components.
+class GgxLobe final : public GenericLobe {
+public:
+    explicit GgxLobe(double alpha) : ggx_{alpha} {}
+    double f(const Vec3& wo, const Vec3& wi) const override {
+        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+        const double t2 = (h.x * h.x + h.y * h.y) / (h.z * h.z);
+        const double a2 = ggx_.alpha * ggx_.alpha, c2 = 1.0 / (1.0 + t2), d = a2 + t2;
+        return a2 / (kPi * c2 * c2 * d * d) * ggx_.G2(wo.z, wi.z, Visibility::height_correlated) /
+               (4.0 * wo.z * wi.z);
+    }
+    LobeHints hints(const Vec3& wo) const override {
+        LobeHints h;
+        h.has_peak = true;
+        h.peak = {-wo.x, -wo.y, wo.z};
+        h.width = 2.0 * ggx_.alpha;
+        h.aspect = std::min(1.0, wo.z + ggx_.alpha);
+        return h;
+    }
+
+private:
+    Ggx ggx_;
+};
+
+}  // namespace
+
+TEST(GenericLobe, AgreesWithTheHandReducedSheenPathWithinBothEstimates) {
+    GenericOptions opt;
+    opt.abs_tol = 1e-9;
+    for (double alpha : {0.05, 0.3, 1.0})
+        for (double mu : {0.5 / 128, 0.1, 0.5, 1.0}) {
+            const Estimate<1> g = generic_albedo(CharlieLobe(alpha), mu, opt);
+            const Estimate<1> s = sheen_charlie_albedo(mu, alpha);
+            EXPECT_NEAR(g.value[0], s.value[0], g.error[0] + s.error[0] + 1e-14) << "alpha " << alpha << " mu " << mu;
+        }
+}
+
+TEST(GenericLobe, MomentWeightsAreTheFresnelFactorsTheyName) {
+    const GgxLobe lobe(0.3);
+    GenericOptions opt;
+    opt.abs_tol = 1e-11;
+    for (double mu : {0.1, 0.6}) {
+        using namespace moment_weight;
+        const std::array<MomentWeight, 4> w = {MomentWeight{one}, MomentWeight{schlick},
+                                               MomentWeight{schlick_power, 5.0}, MomentWeight{one_minus_schlick}};
+        const Estimate<4> m = generic_moments<4>(lobe, mu, w, opt);
+        // (1 - c)^p at p = 5 is Schlick's factor, node for node.
+        EXPECT_EQ(m.value[1], m.value[2]) << mu;
+        // 1 = (1 - (1 - c)^5) + (1 - c)^5, within the estimates.
+        EXPECT_NEAR(m.value[0], m.value[1] + m.value[3], m.error[0] + m.error[1] + m.error[3] + 1e-15) << mu;
+        // The split sums of the hand-reduced GGX path.
+        const Estimate<2> ab = ggx_split_sum(mu, 0.3, Visibility::height_correlated, 1e-11);
+        EXPECT_NEAR(m.value[3], ab.value[0], m.error[3] + ab.error[0] + 1e-14) << mu;
+        EXPECT_NEAR(m.value[1], ab.value[1], m.error[1] + ab.error[1] + 1e-14) << mu;
+    }
+    // Weights that depend on their parameter: the exact dielectric Fresnel
+    // (0 at eta = 1, Schlick-like at eta = 1.5) and F82's c (1 - c)^6, each
+    // against the Monte Carlo route with the same weight.
+    const std::array<MomentWeight, 3> w = {MomentWeight{moment_weight::dielectric_fresnel, 1.0},
+                                           MomentWeight{moment_weight::dielectric_fresnel, 1.5},
+                                           MomentWeight{moment_weight::f82}};
+    const Estimate<3> q = generic_moments<3>(lobe, 0.4, w, opt);
+    EXPECT_EQ(q.value[0], 0.0);
+    const Estimate<3> mc = generic_moments_mc<3>(lobe, 0.4, w, 200000, 11);
+    for (std::size_t k = 1; k < 3; ++k)
+        EXPECT_NEAR(q.value[k], mc.value[k], 4.0 * mc.error[k] + q.error[k]) << "weight " << k;
+    EXPECT_GT(q.value[1], 0.03);  // about F0 = 0.04 at moderate view
+    EXPECT_LT(q.value[1], 0.2);
+}
