@@ -195,15 +195,6 @@ double ltc_objective(double mu_o, double alpha, Visibility vis, const std::array
 // M^-1 (normalized) from the optimizer's parameters.
 LtcInverse ltc_inverse_from_params(const std::array<double, 4>& params);
 
-// Relative L3 error of n0 D against f cos over the sphere and the LTC mass
-// below the horizon, by a finer quadrature than the fit's (any M^-1).
-struct LtcLobeError {
-    double relative_l3 = 0;
-    double below_horizon = 0;
-};
-LtcLobeError ltc_lobe_error(const LtcLobe& lobe, const Mat3& minv, double n0);
-LtcLobeError ltc_lobe_error(double mu_o, double alpha, Visibility vis, const Mat3& minv, double n0);
-
 // The fixed bank of polygon lights the integrated-light error uses: squares
 // of several angular sizes in the specular peak, off the peak and near the
 // horizon, placed relative to the mirror direction of wo = (sin, 0, mu_o).
@@ -231,10 +222,6 @@ double ltc_mass_weight(LtcLobeKind kind);
 // below kLtcFitLightMu, 0 above (src/integrate/ltc_fit.cpp says why).
 inline constexpr double kLtcFitLightWeight = 3.0;
 inline constexpr double kLtcFitLightMu = 0.4;
-
-// The exact integral of the lobe over each light (the part above the
-// horizon), by adaptive quadrature over the polygon; abs_tol per light.
-std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol);
 
 struct LtcLightError {
     double max = 0;   // largest |n0' LTC(P) - exact(P)| / n0 over the bank

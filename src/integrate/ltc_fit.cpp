@@ -850,20 +850,6 @@ LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
     return out;
 }
 
-LtcLobeError ltc_lobe_error(const LtcLobe& lobe, const Mat3& minv, double n0) {
-    const LtcFitOptions fine = ltc_fit_options(2);
-    const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
-    LtcLobeError e;
-    const Mat3 scaled = LtcInverse::from_matrix(minv).matrix();
-    e.relative_l3 = relative_l3(s.grid, scaled);
-    e.below_horizon = below_horizon_of(LtcInverse::from_matrix(minv));
-    return e;
-}
-
-LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3& minv, double n0) {
-    return ltc_lobe_error(LtcLobe(mu, alpha, vis), minv, n0);
-}
-
 // ---- The light bank ----
 
 namespace {
@@ -1010,13 +996,6 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
     return sum;
 }
 }  // namespace
-
-std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol) {
-    const LobeFrame f = lobe_shape(lobe, ltc_norms(lobe).n0).frame;
-    std::vector<double> out;
-    for (const LtcLight& l : lights) out.push_back(polygon_light(lobe, f, l, abs_tol));
-    return out;
-}
 
 LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vector<LtcLight>& lights,
                               const std::vector<double>& exact, double n0) {
