@@ -13,6 +13,7 @@
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
 #include "brdflut/quadrature.h"
 #include "brdflut/verify.h"
 #include "brdflut/exr.h"

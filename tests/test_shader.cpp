@@ -9,6 +9,7 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
 #include "brdflut/shader.h"
 #include "test_support.h"
 

@@ -9,6 +9,7 @@
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
 #include "brdflut/verify.h"
 #include "check/ltc_checks.h"
 

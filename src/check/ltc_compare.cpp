@@ -8,6 +8,7 @@
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
 #include "brdflut/lut.h"
 
 namespace brdflut {
