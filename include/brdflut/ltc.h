@@ -147,13 +147,6 @@ struct LtcNorms {
 };
 LtcNorms ltc_norms(const LtcLobe& lobe);
 
-// The lobe that the catalogue's LTC table `id` (ltc_1, ltc_sheen_charlie,
-// ...) fits at the texel (roughness coordinate, cos_theta): its kind and the
-// table's mapping of the roughness coordinate to the lobe's parameter; vis
-// is the table's visibility option (GGX only). Throws Error for any other id.
-LtcLobe ltc_table_lobe(const std::string& id, double roughness, double mu,
-                       Visibility vis = Visibility::height_correlated);
-
 struct LtcFitOptions {
     int radial_nodes = 28;   // Gauss-Legendre nodes of the objective along each ray above the horizon
     int azimuth_nodes = 16;  // rays about the lobe's peak on [0, pi]

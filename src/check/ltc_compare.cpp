@@ -10,6 +10,7 @@
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_compare.h"
 #include "brdflut/lut.h"
+#include "tables/ltc_tables.h"
 
 namespace brdflut {
 
@@ -68,7 +69,7 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
         const double* p = &img.pixels[k * nc];
         const Mat3 minv = stored_ltc_inverse(*d.def, p);
-        const LtcLobe lobe = ltc_table_lobe(id, r, mu, vis);  // as the table fits it
+        const LtcLobe lobe = ltc_table_lobe(*d.def, r, mu, vis);  // as the table fits it
         const LtcFit fit = fit_ltc(lobe);
         const std::vector<LtcTexelReport> rep = ltc_texel_reports(lobe, {{minv, fit.n0}, {fit.minv.matrix(), fit.n0}});
         const LtcTexelReport& stored = rep[0];
