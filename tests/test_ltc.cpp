@@ -14,6 +14,8 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "brdflut/quadrature.h"
 #include "brdflut/verify.h"
 #include "brdflut/exr.h"

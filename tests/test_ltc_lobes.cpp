@@ -12,6 +12,7 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/generate.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/verify.h"
 #include "tables/ltc_tables.h"
 

@@ -10,6 +10,7 @@
 #include "brdflut/error.h"
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/shader.h"
 #include "tables/ltc_tables.h"
 #include "test_support.h"

@@ -10,6 +10,8 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "brdflut/verify.h"
 #include "check/ltc_checks.h"
 #include "tables/ltc_tables.h"

@@ -9,6 +9,8 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "brdflut/lut.h"
 #include "tables/ltc_tables.h"
 

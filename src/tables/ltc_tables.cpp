@@ -15,6 +15,8 @@
 #include "brdflut/error.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "check/ltc_checks.h"
 #include "tables/checks.h"
 #include "tables/ltc_tables.h"

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "brdflut/catalogue.h"
-#include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/microfacet.h"
 
 namespace brdflut {
