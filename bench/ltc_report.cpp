@@ -19,6 +19,8 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/generate.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 
 using namespace brdflut;
 

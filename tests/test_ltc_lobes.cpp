@@ -12,7 +12,9 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/generate.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/verify.h"
+#include "tables/ltc_tables.h"
 
 namespace brdflut {
 namespace {
@@ -40,7 +42,7 @@ TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
         const PreparedTable pa = albedo.prepare(default_settings(albedo));
         const PreparedTable pn = norm.prepare(default_settings(norm));
         for (const Texel& x : subset()) {
-            const LtcLobe lobe = ltc_table_lobe(c.matrix, r_of(x.a), mu_of(x.t));
+            const LtcLobe lobe = ltc_table_lobe(find_table(c.matrix), r_of(x.a), mu_of(x.t));
             // The tables' roughness coordinate: Charlie alpha = max(r^2, 0.01), EON sigma = r.
             const double r = r_of(x.a);
             EXPECT_EQ(lobe.param, std::string(c.matrix) == "ltc_eon" ? r : std::max(r * r, kLtcSheenMinAlpha));
@@ -58,7 +60,7 @@ TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
 TEST(LtcLobes, EveryFittedTexelIsALocalMinimumOfTheObjective) {
     for (const char* id : kMatrixTables) {
         for (const Texel& x : subset()) {
-            const LtcLobe lobe = ltc_table_lobe(id, r_of(x.a), mu_of(x.t));
+            const LtcLobe lobe = ltc_table_lobe(find_table(id), r_of(x.a), mu_of(x.t));
             const LtcFit fit = fit_ltc(lobe);
             const double j0 = ltc_objective(lobe, fit.params);
             EXPECT_DOUBLE_EQ(j0, fit.objective) << id;
@@ -71,7 +73,7 @@ TEST(LtcLobes, EveryFittedTexelIsALocalMinimumOfTheObjective) {
 
 TEST(LtcLobes, EonAtSigmaZeroIsLambertAndItsFitIsTheIdentity) {
     for (const double mu : {1.0, 0.7, 0.3, 0.05, 0.0}) {
-        const LtcLobe lobe = ltc_table_lobe("ltc_eon", 0.0, mu);
+        const LtcLobe lobe = ltc_table_lobe(find_table("ltc_eon"), 0.0, mu);
         EXPECT_NEAR(lobe(Vec3{0.6, 0.0, 0.8}), 0.8 / kPi, 1e-15);
         const LtcFit fit = fit_ltc(lobe);
         EXPECT_NEAR(fit.minv.a, 1.0, 1e-9) << mu;
@@ -81,7 +83,7 @@ TEST(LtcLobes, EonAtSigmaZeroIsLambertAndItsFitIsTheIdentity) {
         EXPECT_NEAR(fit.n0, 1.0, 1e-9);
         EXPECT_EQ(fit.below_horizon, 0.0);
         // ... and a texel of small sigma is close to it, but not equal.
-        const LtcFit near = fit_ltc(ltc_table_lobe("ltc_eon", 0.05, mu));
+        const LtcFit near = fit_ltc(ltc_table_lobe(find_table("ltc_eon"), 0.05, mu));
         EXPECT_GT(std::abs(near.minv.d - 1.0) + std::abs(near.minv.b), 1e-4) << mu;
         EXPECT_LT(std::abs(near.minv.d - 1.0) + std::abs(near.minv.b), 0.05) << mu;
     }
@@ -95,7 +97,7 @@ TEST(LtcLobes, FitAtNormalViewIsRotationallySymmetric) {
     // out tilted (M^-1[0][2] = 0.09 at r = 0.1).
     for (const char* id : kMatrixTables)
         for (const double r : {0.1, 0.4, 0.7, 1.0}) {
-            const LtcFit fit = fit_ltc(ltc_table_lobe(id, r, 1.0));
+            const LtcFit fit = fit_ltc(ltc_table_lobe(find_table(id), r, 1.0));
             EXPECT_NEAR(fit.minv.a, 1.0, 1e-6) << id << " r=" << r;
             EXPECT_NEAR(fit.minv.b, 0.0, 1e-6 * fit.minv.d) << id << " r=" << r;
             EXPECT_NEAR(fit.minv.c, 0.0, 1e-6) << id << " r=" << r;
@@ -120,13 +122,15 @@ TEST(LtcLobes, CoefficientsAreSmoothAlongARowAndAColumn) {
         return w;
     };
     auto row = [](const char* id, int t, int a0, int step) {
+        const TableDefinition& def = find_table(id);
         std::vector<LtcInverse> v;
-        for (int a = a0; a < 64; a += step) v.push_back(fit_ltc(ltc_table_lobe(id, r_of(a), mu_of(t))).minv);
+        for (int a = a0; a < 64; a += step) v.push_back(fit_ltc(ltc_table_lobe(def, r_of(a), mu_of(t))).minv);
         return v;
     };
     auto col = [](const char* id, int a) {
+        const TableDefinition& def = find_table(id);
         std::vector<LtcInverse> v;
-        for (int t = 0; t < 64; t += 2) v.push_back(fit_ltc(ltc_table_lobe(id, r_of(a), mu_of(t))).minv);
+        for (int t = 0; t < 64; t += 2) v.push_back(fit_ltc(ltc_table_lobe(def, r_of(a), mu_of(t))).minv);
         return v;
     };
     EXPECT_LT(worst(row("ltc_eon", 56, 0, 2)), 0.03);

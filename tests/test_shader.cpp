@@ -9,7 +9,10 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/shader.h"
+#include "tables/ltc_tables.h"
 #include "test_support.h"
 
 namespace brdflut {
@@ -155,7 +158,7 @@ TEST(ShaderWriter, LtcShaderMatrixUnpacksTheFittedInverseTheEvaluatorStores) {
                 const double coords[2] = {r, mu};  // (roughness, cos_theta), the definition's order
                 const TexelValue v = p.evaluator->evaluate(coords, 0);
                 const Mat3 m = stored_ltc_inverse(def, v.value.data());
-                const Mat3 fit = fit_ltc(ltc_table_lobe(def.id, r, mu), ltc_fit_options(0)).minv.matrix();
+                const Mat3 fit = fit_ltc(ltc_table_lobe(def, r, mu), ltc_fit_options(0)).minv.matrix();
                 ASSERT_GT(std::abs(m.m[1][1]), 0.0);
                 for (int i = 0; i < 3; ++i)
                     for (int j = 0; j < 3; ++j)

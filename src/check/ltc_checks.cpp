@@ -9,8 +9,12 @@
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "brdflut/verify.h"
 #include "check/ltc_checks.h"
+#include "tables/ltc_tables.h"
 
 namespace brdflut {
 
@@ -32,7 +36,7 @@ std::pair<double, std::string> metadata_maxima_error(const std::string& id) {
     double light = 0.0, l3 = 0.0, below = 0.0;
     for (std::size_t k = 0; k < t.texel_count(); ++k) {
         const int ix = static_cast<int>(k % 5), iy = static_cast<int>(k / 5);
-        const LtcLobe lobe = ltc_table_lobe(id, s.axes[0].value(ix), s.axes[1].value(iy));
+        const LtcLobe lobe = ltc_table_lobe(def, s.axes[0].value(ix), s.axes[1].value(iy));
         const double v[4] = {t.at(k, 0), t.at(k, 1), t.at(k, 2), t.at(k, 3)};
         // The matrix by the table's packing, as a shader unpacks it.
         const Mat3 minv = stored_ltc_inverse(def, v);
@@ -60,17 +64,18 @@ ClosedFormCheck ltc_local_minimum_check(const std::string& id, const std::string
     return ClosedFormCheck{
         "fit is a local minimum of its objective (relative drop under perturbation)", 1e-9,
         [id, parameter](const TexelEvaluator& e) {
+            const TableDefinition& def = find_table(id);
             std::pair<double, std::string> r{0.0, ""};
             for (double rough : {0.1, 0.5, 0.9})
                 for (double mu : {1.0, 0.5, 0.05}) {
                     const double c[2] = {rough, mu};
                     const TexelValue v = e.evaluate(c, 0);
-                    const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
+                    const LtcLobe lobe = ltc_table_lobe(def, rough, mu);
                     const LtcFit fit = fit_ltc(lobe);
                     // The table holds this fit: its matrix, unpacked as a
                     // shader unpacks it and scaled to a middle element of 1,
                     // is the fit's.
-                    const Mat3 stored = stored_ltc_inverse(find_table(id), v.value.data());
+                    const Mat3 stored = stored_ltc_inverse(def, v.value.data());
                     const Mat3 want = fit.minv.matrix();
                     double held = 0.0;
                     for (int i = 0; i < 3; ++i)
@@ -107,12 +112,13 @@ ClosedFormCheck ltc_report_check(const std::string& id, const std::string& param
         [id, parameter, opt](const TexelEvaluator& e) {
             LtcFitOptions fine = opt;
             fine.light_tolerance = 1e-3 * opt.light_tolerance;
+            const TableDefinition& def = find_table(id);
             std::pair<double, std::string> r{0.0, ""};
             for (double rough : {0.2, 0.8})
                 for (double mu : {0.9, 0.1}) {
                     const double c[2] = {rough, mu};
                     const TexelValue v = e.evaluate(c, 0);
-                    const LtcLobe lobe = ltc_table_lobe(id, rough, mu);
+                    const LtcLobe lobe = ltc_table_lobe(def, rough, mu);
                     const LtcFit fit = fit_ltc(lobe, opt);
                     const LtcTexelReport rep = ltc_texel_report(lobe, fit.minv.matrix(), fit.n0, fine);
                     const double d = std::max(std::abs(v.value[2] - rep.light_max), std::abs(v.value[3] - rep.light_mean));

@@ -8,7 +8,11 @@
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "brdflut/lut.h"
+#include "tables/ltc_tables.h"
 
 namespace brdflut {
 
@@ -67,7 +71,7 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
         const double* p = &img.pixels[k * nc];
         const Mat3 minv = stored_ltc_inverse(*d.def, p);
-        const LtcLobe lobe = ltc_table_lobe(id, r, mu, vis);  // as the table fits it
+        const LtcLobe lobe = ltc_table_lobe(*d.def, r, mu, vis);  // as the table fits it
         const LtcFit fit = fit_ltc(lobe);
         const std::vector<LtcTexelReport> rep = ltc_texel_reports(lobe, {{minv, fit.n0}, {fit.minv.matrix(), fit.n0}});
         const LtcTexelReport& stored = rep[0];

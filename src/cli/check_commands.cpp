@@ -10,7 +10,7 @@
 #include "brdflut/exr.h"
 #include "brdflut/formats.h"
 #include "brdflut/lut.h"
-#include "brdflut/ltc.h"
+#include "brdflut/ltc_compare.h"
 #include "brdflut/plot.h"
 #include "brdflut/verify.h"
 #include "cli/commands.h"

@@ -1,6 +1,7 @@
 // Fitting an LTC to a lobe (GGX, Charlie sheen, EON: LtcLobe) by
-// deterministic quadrature, and the error figures of any LTC against the
-// lobe it stands for. One fitter for every lobe; what differs is the
+// deterministic quadrature (integrate/ltc_quadrature.h, which the error
+// figures of any LTC against the lobe it stands for, ltc_report.cpp, share).
+// One fitter for every lobe; what differs is the
 // lobe's description: f cos, its exact norm (ltc_norms) and where its peak
 // is looked for (LtcLobe::peaks_near_mirror), which sets the initial guess
 // and the frame of the quadrature (step 2).
@@ -57,10 +58,12 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/lobe_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/oren_nayar.h"
 #include "brdflut/quadrature.h"
 #include "brdflut/sheen.h"
 #include "brdflut/sheen_integrals.h"
+#include "integrate/ltc_quadrature.h"
 #include "integrate/ltc_simd.h"
 
 #if defined(__SSE2__)
@@ -69,284 +72,11 @@
 
 namespace brdflut {
 
+using namespace ltc_detail;
+
 namespace {
 
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Vec3 normalize(const Vec3& a) {
-    const double l = std::sqrt(dot(a, a));
-    return {a.x / l, a.y / l, a.z / l};
-}
-Vec3 add(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 scale(const Vec3& a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-
 double clamp_alpha(double alpha) { return std::max(alpha, kLtcMinAlpha); }
-double clamp_mu(double mu) { return std::clamp(mu, kLtcMinMu, 1.0); }
-
-// Quadrature nodes on the sphere with the target's values.
-struct SphereGrid {
-    std::vector<double> x, y, z, w, p;
-    double p3 = 0.0;  // int p^3
-    double p2 = 0.0;
-    double mass_weight = 0.0;  // of the triangular discrimination in the objective (ltc_mass_weight)
-
-    std::size_t size() const { return x.size(); }
-};
-
-// Coordinates about the lobe: the stereographic projection from the
-// antipode of `axis` (unit, in the x-z plane, above the horizon), scaled by
-// the lobe's widths: (X, Y) = (w1 rho cos(phi), w2 rho sin(phi)) along t1 =
-// (axis.z, 0, -axis.x) and y, R^2 = X^2 + Y^2 = tan^2(beta/2) with beta the
-// angle from the axis, rho = u / (1 - u), u in [0, 1). Each ray phi is a
-// meridian from the axis to its antipode; the measure is
-// dw = 4 w1 w2 rho / (1 + R^2)^2 drho dphi.
-struct LobeFrame {
-    Vec3 axis{0, 0, 1};
-    double w1 = 1.0, w2 = 1.0;
-
-    Vec3 t1() const { return {axis.z, 0.0, -axis.x}; }
-    // tan(beta/2) = k(phi) rho on the ray phi.
-    double k(double phi) const { return std::hypot(w1 * std::cos(phi), w2 * std::sin(phi)); }
-    // The ray's direction in the tangent plane (unit), t1 cos(phi') + y sin(phi').
-    Vec3 tangent(double phi) const {
-        const double c = w1 * std::cos(phi), sn = w2 * std::sin(phi), l = std::hypot(c, sn);
-        const Vec3 a = t1();
-        return {c / l * a.x, sn / l, c / l * a.z};
-    }
-    // The stereographic angle phi of a direction's azimuth phi' about the axis.
-    double phi_of_azimuth(double phi_p) const { return std::atan2(std::sin(phi_p) / w2, std::cos(phi_p) / w1); }
-    Vec3 direction(double beta, const Vec3& t) const {
-        const double sb = std::sin(beta), cb = std::cos(beta);
-        return {sb * t.x + cb * axis.x, sb * t.y, sb * t.z + cb * axis.z};
-    }
-    // The direction at u on the ray of tangent t (unit) and k = kk, from
-    // s = tan(beta/2) = kk rho without trigonometry: cos(beta) = (1 - s^2) /
-    // (1 + s^2), sin(beta) = 2 s / (1 + s^2) (in 1/s beyond s = 1).
-    Vec3 direction_at(double u, double kk, const Vec3& t) const {
-        const double s = kk * rho_of_u(u);
-        double cb, sb;
-        if (s <= 1.0) {
-            const double s2 = s * s;
-            cb = (1.0 - s2) / (1.0 + s2);
-            sb = 2.0 * s / (1.0 + s2);
-        } else {
-            const double r = 1.0 / s, r2 = r * r;
-            cb = (r2 - 1.0) / (r2 + 1.0);
-            sb = 2.0 * r / (r2 + 1.0);
-        }
-        return {sb * t.x + cb * axis.x, sb * t.y, sb * t.z + cb * axis.z};
-    }
-    static double rho_of_u(double u) { return u / (1.0 - u); }
-    static double u_of_rho(double rho) { return std::isinf(rho) ? 1.0 : rho / (1.0 + rho); }
-    // beta on ray phi (through k) of u, and the measure dw / (du dphi).
-    double beta_of_u(double u, double kk) const { return 2.0 * std::atan(kk * rho_of_u(u)); }
-    double measure(double u, double kk) const {
-        const double rho = rho_of_u(u), R2 = kk * kk * rho * rho;
-        return 4.0 * w1 * w2 * rho / ((1.0 + R2) * (1.0 + R2)) / ((1.0 - u) * (1.0 - u));
-    }
-    double u_of_beta(double beta, double kk) const {
-        if (beta >= kPi) return 1.0;
-        return u_of_rho(std::tan(0.5 * beta) / kk);
-    }
-};
-
-// The objective sums its grid in this many interleaved lanes (objective()).
-constexpr std::size_t kObjectiveLanes = 4;
-
-// Nodes over the whole sphere: on each ray phi (midpoint rule on [0, pi],
-// doubled: the lobe is even in y) Gauss-Legendre in u on [0, u_h] above the
-// horizon and on [u_h, 1] below it, so that the lobe's cut at the horizon
-// is a panel end, not inside a panel.
-SphereGrid make_grid(const LtcLobe& lobe, double n0, const LobeFrame& f, int radial, int azimuth) {
-    const int below = std::max(6, radial / 3);
-    const GaussLegendre& up = gauss_legendre(radial);
-    const GaussLegendre& low = gauss_legendre(below);
-    SphereGrid g;
-    const std::size_t n = static_cast<std::size_t>(radial + below) * static_cast<std::size_t>(azimuth);
-    g.x.reserve(n);
-    g.y.reserve(n);
-    g.z.reserve(n);
-    g.w.reserve(n);
-    g.p.reserve(n);
-    const double dphi = kPi / azimuth;
-    for (int k = 0; k < azimuth; ++k) {
-        const double phi = (k + 0.5) * dphi;
-        const double kk = f.k(phi);
-        const Vec3 t = f.tangent(phi);
-        // d.z = cos(beta) axis.z + sin(beta) t.z = 0 (axis.z > 0).
-        const double beta_h = std::atan2(f.axis.z, -t.z);
-        const double u_h = f.u_of_beta(beta_h, kk);
-        auto add_panel = [&](const GaussLegendre& rule, double u0, double u1, bool upper) {
-            const double c = 0.5 * (u0 + u1), h = 0.5 * (u1 - u0);
-            for (std::size_t j = 0; j < rule.x.size(); ++j) {
-                const double u = c + h * rule.x[j];
-                const double wt = h * rule.w[j] * f.measure(u, kk) * 2.0 * dphi;
-                const Vec3 d = f.direction(f.beta_of_u(u, kk), t);
-                const double pv = upper ? lobe(d) / n0 : 0.0;
-                g.x.push_back(d.x);
-                g.y.push_back(d.y);
-                g.z.push_back(d.z);
-                g.w.push_back(wt);
-                g.p.push_back(pv);
-                g.p3 += wt * pv * pv * pv;
-                g.p2 += wt * pv * pv;
-            }
-        };
-        add_panel(up, 0.0, u_h, true);
-        add_panel(low, u_h, 1.0, false);
-    }
-    // Padded to whole groups of the objective's lanes with copies of the
-    // last node of weight 0 and p = 0: they add exactly +0 to every sum
-    // wherever that node's D is finite.
-    while (g.x.size() % kObjectiveLanes != 0) {
-        g.x.push_back(g.x.back());
-        g.y.push_back(g.y.back());
-        g.z.push_back(g.z.back());
-        g.w.push_back(0.0);
-        g.p.push_back(0.0);
-    }
-    return g;
-}
-
-// The quadrature of one texel and its initial guess.
-struct Setup {
-    SphereGrid grid;
-    LobeFrame frame;
-    // The light term of the objective (fit_objective): its weight, the fit
-    // bank and the lobe's mass in each of its lights (exact light / n0).
-    double light_weight = 0.0;
-    std::vector<LtcLight> lights;
-    std::vector<double> light_mass;
-    std::array<double, 4> x0{};  // initial parameters
-    std::array<double, 4> step{};  // initial simplex steps
-};
-
-// The lobe's peak and widths. An isotropic lobe peaks in the plane of
-// incidence: p is scanned there at offsets from the mirror direction
-// spaced evenly in log(offset) from 1e-12 to 1 radian on both sides, and
-// the best bracket refined by golden section. (The peak, not the average
-// direction: at grazing view a narrow lobe has a long tail toward the
-// normal that moves its average far from its peak.) The widths are the
-// angles from the peak at which p falls to half its peak, in the plane of
-// incidence (the mean of both sides) and across it, found by bisection in
-// log(angle).
-struct LobeShape {
-    LobeFrame frame;
-    double theta = 0.0;       // the peak's signed angle from the normal (+x positive)
-    double half_in = 1.0;     // half-maximum angle in the plane of incidence
-    double half_across = 1.0; // ... across it
-};
-
-LobeShape lobe_shape(const LtcLobe& lobe, double n0) {
-    const double theta_m = -std::acos(lobe.mu_o);  // mirror direction, at -x
-    auto at = [&](double theta) { return lobe(Vec3{std::sin(theta), 0.0, std::cos(theta)}) / n0; };
-    const double lo_theta = -0.5 * kPi, hi_theta = 0.5 * kPi;
-    std::vector<double> cand{theta_m};
-    for (int k = 0; k <= 120; ++k) {
-        const double off = std::pow(10.0, -12.0 + 0.1 * k);
-        for (double t : {theta_m - off, theta_m + off})
-            if (t > lo_theta && t < hi_theta) cand.push_back(t);
-    }
-    // A lobe that may peak anywhere (retro-reflection, a sheen ring about
-    // the normal): the whole plane of incidence, every degree, too.
-    if (!lobe.peaks_near_mirror())
-        for (int k = 1; k < 180; ++k) cand.push_back(lo_theta + k * kPi / 180.0);
-    std::sort(cand.begin(), cand.end());
-    std::size_t best = 0;
-    double pbest = -1.0;
-    for (std::size_t i = 0; i < cand.size(); ++i) {
-        const double v = at(cand[i]);
-        if (v > pbest) {
-            pbest = v;
-            best = i;
-        }
-    }
-    double a = best > 0 ? cand[best - 1] : lo_theta;
-    double b = best + 1 < cand.size() ? cand[best + 1] : hi_theta;
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    double f1 = at(x1), f2 = at(x2);
-    for (int it = 0; it < 100 && b - a > 1e-16; ++it) {
-        if (f1 > f2) {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = at(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = at(x2);
-        }
-    }
-    double theta = f1 > f2 ? x1 : x2;
-    double pmax = std::max(f1, f2);
-    if (pbest > pmax) {
-        theta = cand[best];
-        pmax = pbest;
-    }
-    // Keep the axis above the horizon (the grid splits its rays there).
-    theta = std::clamp(theta, -0.5 * kPi + 1e-12, 0.5 * kPi - 1e-12);
-    LobeShape out;
-    out.theta = theta;
-    const Vec3 axis{std::sin(theta), 0.0, std::cos(theta)};
-    const Vec3 t1{axis.z, 0.0, -axis.x};
-    auto half_angle = [&](const Vec3& dir) {
-        double lo = -14.0, hi = std::log10(kPi);
-        auto p_at = [&](double l) {
-            const double d = std::pow(10.0, l);
-            const Vec3 w{std::cos(d) * axis.x + std::sin(d) * dir.x, std::sin(d) * dir.y,
-                         std::cos(d) * axis.z + std::sin(d) * dir.z};
-            return lobe(w) / n0;
-        };
-        if (p_at(hi) > 0.5 * pmax) return std::pow(10.0, hi);
-        if (p_at(lo) < 0.5 * pmax) return std::pow(10.0, lo);
-        for (int it = 0; it < 60; ++it) {
-            const double m = 0.5 * (lo + hi);
-            (p_at(m) > 0.5 * pmax ? lo : hi) = m;
-        }
-        return std::pow(10.0, 0.5 * (lo + hi));
-    };
-    out.half_in = 0.5 * (half_angle(t1) + half_angle(Vec3{-t1.x, 0.0, -t1.z}));
-    out.half_across = half_angle(Vec3{0.0, 1.0, 0.0});
-    if (!lobe.peaks_near_mirror()) {
-        // A wide lobe, or a ring about the normal (sheen at normal view):
-        // coordinates about the normal, the horizon at rho = 1, so that the
-        // quadrature is even in x where the lobe is (at normal view) and
-        // covers all sides of a ring alike.
-        out.frame.axis = Vec3{0.0, 0.0, 1.0};
-        out.frame.w1 = out.frame.w2 = 1.0;
-        return out;
-    }
-    out.frame.axis = axis;
-    // R = tan(beta/2) = beta/2 at the half-maximum angle when rho = 1.
-    out.frame.w1 = std::clamp(0.5 * out.half_in, 1e-14, 1.0);
-    out.frame.w2 = std::clamp(0.5 * out.half_across, 1e-14, 1.0);
-    return out;
-}
-
-// A cosine scaled by s along one axis falls to half its peak at the angle
-// atan(s sqrt(sqrt(2) - 1)) from its axis.
-constexpr double kHalfMaxScale = 0.6435942529055827;  // sqrt(sqrt(2) - 1)
-
-// The scale s of the cosine M = diag(s, s, 1) whose density falls to half
-// its peak at the angle atan(t) from its axis: D(t) / D(0) = (1 + t^2)^(3/2)
-// / (1 + t^2 / s^2)^2 = 1/2. (For small t, s = t / kHalfMaxScale.)
-double cosine_scale_of_half_max(double t) {
-    return t / std::sqrt(std::sqrt(2.0) * std::pow(1.0 + t * t, 0.75) - 1.0);
-}
-
-// The initial scales from the lobe's half-maximum widths. GGX lobes are
-// narrow where the fit is hard, and their guess takes the narrow cosine's
-// t / kHalfMaxScale; the wide lobes (diffuse, sheen) the exact scale, so
-// that a lobe that is a cosine (EON at sigma = 0) starts at its own LTC.
-double initial_scale(const LtcLobe& lobe, double half_angle) {
-    const double t = std::tan(std::min(half_angle, 1.5));
-    return std::clamp(lobe.peaks_near_mirror() ? t / kHalfMaxScale : cosine_scale_of_half_max(t), 1e-14, 4.0);
-}
 
 // The weight of the light term of the objective (fit_objective) at view
 // cosine mu: kLtcFitLightWeight (1 - mu / kLtcFitLightMu)^2 below
@@ -374,27 +104,6 @@ double light_weight_of(double mu) {
     const double r = std::max(0.0, 1.0 - mu / kLtcFitLightMu);
     return kLtcFitLightWeight * r * r;
 }
-double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& light, double abs_tol);
-
-// The grid, frame and initial guess of a texel: what the fit and the error
-// figures share (make_fit_setup adds the fit's light term).
-Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth) {
-    Setup s;
-    const LobeShape shape = lobe_shape(lobe, n0);
-    s.frame = shape.frame;
-    const double m11 = initial_scale(lobe, shape.half_in);
-    const double m22 = initial_scale(lobe, shape.half_across);
-    s.x0 = {shape.theta, std::log(m11), std::log(m22), 0.0};
-    s.step = {0.5 * std::min(m11, 0.5), 0.3, 0.3, 0.3};
-    // In the frame about the normal a narrow sheen lobe lies in a band at
-    // the horizon end of each ray: half as many radial nodes again resolve
-    // it (with the GGX count the fitted sheen coefficients zigzag between
-    // neighbouring texels at roughness 0.1 to 0.2 by up to 10 %).
-    if (!lobe.peaks_near_mirror()) radial += radial / 2;
-    s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
-    s.grid.mass_weight = ltc_mass_weight(lobe.kind);
-    return s;
-}
 
 // The setup of the fit's objective (fit_objective): make_setup at the
 // options' grid, with the light term's weight and the lobe's exact light
@@ -408,16 +117,6 @@ Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
             s.light_mass.push_back(polygon_light(lobe, s.frame, l, opt.light_tolerance * n0) / n0);
     }
     return s;
-}
-
-// D of the LTC at grid node i (minv with middle element 1).
-inline double grid_density(const SphereGrid& g, std::size_t i, const Mat3& minv, double det_over_pi) {
-    const auto& m = minv.m;
-    const double x = g.x[i], y = g.y[i], z = g.z[i];
-    const double px = m[0][0] * x + m[0][2] * z;
-    const double pz = m[2][0] * x + m[2][2] * z;
-    const double l2 = px * px + y * y + pz * pz;
-    return pz > 0.0 ? pz * det_over_pi / (l2 * l2) : 0.0;
 }
 
 // The fit's objective: Heitz's error measure, computed by quadrature instead
@@ -554,18 +253,6 @@ double fit_objective(const Setup& s, const Mat3& minv) {
     return j;
 }
 
-// (int |p - D|^3 dw / int p^3 dw)^(1/3).
-double relative_l3(const SphereGrid& g, const Mat3& minv) {
-    const double det = std::abs(minv.det()) / kPi;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < g.size(); ++i) {
-        const double e = std::abs(g.p[i] - grid_density(g, i, minv, det));
-        sum += g.w[i] * e * e * e;
-    }
-    return std::cbrt(sum / g.p3);
-}
-
-// Nelder-Mead on R^N with the standard coefficients (reflection 1,
 // expansion 2, contraction 1/2, shrink 1/2), from x0 with steps `step`.
 template <int N, class F>
 std::array<double, N> nelder_mead(F&& f, const std::array<double, N>& x0, const std::array<double, N>& step,
@@ -764,18 +451,6 @@ LtcFitOptions ltc_fit_options(int quality_level) {
     return o;
 }
 
-namespace {
-// The LTC's mass below the horizon: the hemisphere z > 0 maps under M^-1 to
-// the half space whose normal is row 2 of M, and the clamped cosine's
-// integral over a hemisphere whose axis has cosine c with the normal is
-// (1 + c) / 2.
-double below_horizon_of(const LtcInverse& minv) {
-    const Mat3 m = minv.matrix().inverse();
-    const Vec3 n = normalize(Vec3{m.m[2][0], m.m[2][1], m.m[2][2]});
-    return 0.5 * (1.0 - n.z);
-}
-}  // namespace
-
 LtcInverse ltc_inverse_from_params(const std::array<double, 4>& p) {
     const double ct = std::cos(p[0]), st = std::sin(p[0]);
     const double m11 = std::exp(p[1]), m22 = std::exp(p[2]), m13 = p[3] * m11;
@@ -850,48 +525,7 @@ LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
     return out;
 }
 
-LtcLobeError ltc_lobe_error(const LtcLobe& lobe, const Mat3& minv, double n0) {
-    const LtcFitOptions fine = ltc_fit_options(2);
-    const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
-    LtcLobeError e;
-    const Mat3 scaled = LtcInverse::from_matrix(minv).matrix();
-    e.relative_l3 = relative_l3(s.grid, scaled);
-    e.below_horizon = below_horizon_of(LtcInverse::from_matrix(minv));
-    return e;
-}
-
-LtcLobeError ltc_lobe_error(double mu, double alpha, Visibility vis, const Mat3& minv, double n0) {
-    return ltc_lobe_error(LtcLobe(mu, alpha, vis), minv, n0);
-}
-
-// ---- The light bank ----
-
-namespace {
-// A square light of angular half-size sigma centred on direction c, its
-// edges along e1, e2 (c, e1, e2 orthonormal), counter-clockwise seen from
-// the origin.
-LtcLight square(const char* name, const Vec3& c_in, double sigma_deg) {
-    const Vec3 c = normalize(c_in);
-    const Vec3 up = std::abs(c.z) < 0.999 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
-    const Vec3 e2 = normalize(cross(up, c));
-    const Vec3 e1 = cross(e2, c);
-    const double t = std::tan(sigma_deg * kPi / 180.0);
-    LtcLight l{name, {}};
-    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-    for (int i = 0; i < 4; ++i)
-        l.vertices[static_cast<std::size_t>(i)] =
-            normalize(add(c, add(scale(e1, t * sx[i]), scale(e2, t * sy[i]))));
-    return l;
-}
-Vec3 rotate_y(const Vec3& v, double deg) {  // toward +x for positive angles
-    const double a = deg * kPi / 180.0, c = std::cos(a), s = std::sin(a);
-    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
-}
-Vec3 from_angles(double elevation_deg, double phi_deg) {
-    const double e = elevation_deg * kPi / 180.0, p = phi_deg * kPi / 180.0;
-    return {std::cos(e) * std::cos(p), std::cos(e) * std::sin(p), std::sin(e)};
-}
-}  // namespace
+// ---- The fit's light bank ----
 
 std::vector<LtcLight> ltc_fit_light_bank(double mu) {
     mu = clamp_mu(mu);
@@ -907,162 +541,6 @@ std::vector<LtcLight> ltc_fit_light_bank(double mu) {
         square("fit: horizon, 12 deg", from_angles(8.0, 160.0), 12.0),
         square("fit: 31 deg from the normal toward the view, 35 deg", Vec3{0.6, 0, 1}, 35.0),
     };
-}
-
-std::vector<LtcLight> ltc_light_bank(double mu) {
-    mu = clamp_mu(mu);
-    const double s = safe_sqrt(1.0 - mu * mu);
-    const Vec3 r{-s, 0.0, mu};  // mirror direction
-    return {
-        square("peak 1 deg", r, 1.0),
-        square("peak 5 deg", r, 5.0),
-        square("peak 15 deg", r, 15.0),
-        square("peak 40 deg", r, 40.0),
-        square("off-peak 30 deg toward the view, 10 deg", rotate_y(r, 30.0), 10.0),
-        square("off-peak 90 deg in azimuth, 10 deg", Vec3{0.0, s, mu}, 10.0),
-        square("off-peak 45 deg toward the view, 30 deg", rotate_y(r, 45.0), 30.0),
-        square("horizon, mirror side, 10 deg", from_angles(5.0, 180.0), 10.0),
-        square("horizon, side, 10 deg", from_angles(5.0, 90.0), 10.0),
-        square("overhead 60 deg", Vec3{0, 0, 1}, 60.0),
-    };
-}
-
-namespace {
-// The interval of beta in [0, pi] where e . d(beta) >= 0 for d(beta) =
-// cos(beta) a + sin(beta) t: A cos(beta) + B sin(beta) = R cos(beta - b0)
-// >= 0 on [b0 - pi/2, b0 + pi/2] (mod 2 pi), which meets [0, pi] in one
-// interval.
-void clip_interval(double A, double B, double& lo, double& hi) {
-    if (A == 0.0 && B == 0.0) return;
-    const double b0 = std::atan2(B, A);
-    const double half = 0.5 * kPi;
-    double l, h;
-    if (b0 >= -half) {
-        l = std::max(0.0, b0 - half);
-        h = std::min(kPi, b0 + half);
-    } else {
-        l = b0 + 3.0 * half;
-        h = kPi;
-    }
-    lo = std::max(lo, l);
-    hi = std::min(hi, h);
-}
-
-// The exact light of one convex polygon: in the lobe's polar coordinates,
-// each ray phi crosses the polygon's cone (and the upper hemisphere) in
-// one interval of beta, integrated in u by adaptive Gauss-Kronrod; phi by
-// adaptive Gauss-Kronrod between the vertices' azimuths.
-double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& light, double abs_tol) {
-    const std::size_t n = light.vertices.size();
-    std::vector<Vec3> e;  // inward normals of the edge planes, and the horizon
-    Vec3 centroid{};
-    for (const Vec3& v : light.vertices) centroid = add(centroid, v);
-    for (std::size_t i = 0; i < n; ++i) {
-        Vec3 c = cross(light.vertices[i], light.vertices[(i + 1) % n]);
-        if (dot(c, centroid) < 0.0) c = scale(c, -1.0);
-        e.push_back(c);
-    }
-    e.push_back(Vec3{0, 0, 1});
-    const Vec3 t1 = f.t1();
-    const Vec3 y{0, 1, 0};
-    std::vector<double> breaks{0.0, kTwoPi};
-    auto add_break = [&](const Vec3& v) {
-        double phi = f.phi_of_azimuth(std::atan2(dot(v, y), dot(v, t1)));
-        if (phi < 0.0) phi += kTwoPi;
-        breaks.push_back(phi);
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-        const Vec3& a = light.vertices[i];
-        const Vec3& b = light.vertices[(i + 1) % n];
-        add_break(a);
-        // Where an edge crosses the horizon the ray's interval changes from
-        // one bound to another: a kink in phi, made a panel end. (The chord's
-        // point at z = 0 projects radially onto the arc.)
-        if ((a.z > 0.0) != (b.z > 0.0)) {
-            const double t = a.z / (a.z - b.z);
-            add_break(add(a, scale(add(b, scale(a, -1.0)), t)));
-        }
-    }
-    std::sort(breaks.begin(), breaks.end());
-    AdaptiveOptions outer;
-    outer.abs_tol = 0.5 * abs_tol / static_cast<double>(breaks.size() - 1);
-    outer.max_intervals = 200;
-    AdaptiveOptions inner;
-    inner.abs_tol = 0.5 * abs_tol / kTwoPi;
-    inner.max_intervals = 100;
-    auto ray = [&](double phi) {
-        const Vec3 t = f.tangent(phi);
-        const double kk = f.k(phi);
-        double lo = 0.0, hi = kPi;
-        for (const Vec3& c : e) clip_interval(dot(c, f.axis), dot(c, t), lo, hi);
-        if (!(hi > lo)) return std::array<double, 1>{0.0};
-        const double u0 = f.u_of_beta(lo, kk), u1 = f.u_of_beta(hi, kk);
-        const Estimate<1> in = integrate_adaptive<1>(
-            [&](double u) {
-                return std::array<double, 1>{lobe(f.direction_at(u, kk, t)) * f.measure(u, kk)};
-            },
-            u0, u1, inner);
-        return in.value;
-    };
-    double sum = 0.0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
-        if (breaks[k + 1] > breaks[k]) sum += integrate_adaptive<1>(ray, breaks[k], breaks[k + 1], outer).value[0];
-    return sum;
-}
-}  // namespace
-
-std::vector<double> ltc_exact_light(const LtcLobe& lobe, const std::vector<LtcLight>& lights, double abs_tol) {
-    const LobeFrame f = lobe_shape(lobe, ltc_norms(lobe).n0).frame;
-    std::vector<double> out;
-    for (const LtcLight& l : lights) out.push_back(polygon_light(lobe, f, l, abs_tol));
-    return out;
-}
-
-LtcLightError ltc_light_error(const Mat3& minv, double n0_stored, const std::vector<LtcLight>& lights,
-                              const std::vector<double>& exact, double n0) {
-    LtcLightError e;
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const double ltc = n0_stored * ltc_polygon_integral(minv, lights[i].vertices.data(), 4);
-        const double err = std::abs(ltc - exact[i]) / n0;
-        e.per_light.push_back(err);
-        e.max = std::max(e.max, err);
-        e.mean += err / static_cast<double>(lights.size());
-    }
-    return e;
-}
-
-std::vector<LtcTexelReport> ltc_texel_reports(const LtcLobe& lobe, const std::vector<LtcCandidate>& candidates,
-                                              const LtcFitOptions& opt) {
-    // The lobe's side, computed once for every candidate: its exact norm,
-    // the fine grid of the L3 error (whose frame the exact light uses too)
-    // and the exact light of the bank.
-    const double n0 = ltc_norms(lobe).n0;
-    const LtcFitOptions fine = ltc_fit_options(2);
-    const Setup s = make_setup(lobe, n0, fine.radial_nodes, fine.azimuth_nodes);
-    const std::vector<LtcLight> bank = ltc_light_bank(lobe.mu_o);
-    std::vector<double> exact;
-    for (const LtcLight& l : bank) exact.push_back(polygon_light(lobe, s.frame, l, opt.light_tolerance * n0));
-    std::vector<LtcTexelReport> out;
-    for (const LtcCandidate& c : candidates) {
-        LtcTexelReport r;
-        const LtcInverse inv = LtcInverse::from_matrix(c.minv);
-        r.relative_l3 = relative_l3(s.grid, inv.matrix());
-        r.below_horizon = below_horizon_of(inv);
-        const LtcLightError l = ltc_light_error(c.minv, c.n0_stored, bank, exact, n0);
-        r.light_max = l.max;
-        r.light_mean = l.mean;
-        out.push_back(r);
-    }
-    return out;
-}
-
-LtcTexelReport ltc_texel_report(const LtcLobe& lobe, const Mat3& minv, double n0_stored, const LtcFitOptions& opt) {
-    return ltc_texel_reports(lobe, {{minv, n0_stored}}, opt).front();
-}
-
-LtcTexelReport ltc_texel_report(double mu, double alpha, Visibility vis, const Mat3& minv, double n0_stored,
-                                const LtcFitOptions& opt) {
-    return ltc_texel_report(LtcLobe(mu, alpha, vis), minv, n0_stored, opt);
 }
 
 namespace detail {

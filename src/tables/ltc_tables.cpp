@@ -15,8 +15,11 @@
 #include "brdflut/error.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
+#include "brdflut/ltc_fit.h"
+#include "brdflut/ltc_report.h"
 #include "check/ltc_checks.h"
 #include "tables/checks.h"
+#include "tables/ltc_tables.h"
 #include "tables/registry.h"
 #include "tables/shared_results.h"
 
@@ -461,12 +464,12 @@ void register_ltc_family(FamilyEntries& family) {
     }
 }
 
-LtcLobe ltc_table_lobe(const std::string& id, double roughness, double mu, Visibility vis) {
+LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, Visibility vis) {
     for (const Entry& e : entries())
-        if (e.id == id) return texel_lobe(e.lobe, e.layout, roughness, mu, vis);
+        if (e.id == def.id) return texel_lobe(e.lobe, e.layout, roughness, mu, vis);
     std::string known;
     for (const Entry& e : entries()) known += (known.empty() ? "" : ", ") + e.id;
-    throw Error("table '" + id + "' is not an LTC table; allowed: " + known);
+    throw Error("table '" + def.id + "' is not an LTC table; allowed: " + known);
 }
 
 }  // namespace brdflut
