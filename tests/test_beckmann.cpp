@@ -12,7 +12,6 @@
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
 #include "brdflut/generic_lobe.h"
-#include "brdflut/ggx_integrals.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
 #include "tables/registry.h"
@@ -21,36 +20,6 @@
 using namespace brdflut;
 
 namespace {
-
-const Visibility kBoth[] = {Visibility::height_correlated, Visibility::separable};
-
-// The GGX BRDF (F = 1) as a generic lobe, from microfacet.h's D and G2; D
-// from the half vector's components, as the generic path expects of a lobe.
-class GgxLobe final : public GenericLobe {
-public:
-    GgxLobe(double alpha, Visibility vis) : ggx_{alpha}, vis_(vis) {}
-    double f(const Vec3& wo, const Vec3& wi) const override {
-        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
-        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
-        const double t2 = (h.x * h.x + h.y * h.y) / (h.z * h.z);
-        const double a2 = ggx_.alpha * ggx_.alpha;
-        const double c2 = 1.0 / (1.0 + t2);
-        const double d = a2 + t2;  // D = alpha^2 / (pi cos^4 (alpha^2 + tan^2)^2)
-        return a2 / (kPi * c2 * c2 * d * d) * ggx_.G2(wo.z, wi.z, vis_) / (4.0 * wo.z * wi.z);
-    }
-    LobeHints hints(const Vec3& wo) const override {
-        LobeHints h;
-        h.has_peak = true;
-        h.peak = {-wo.x, -wo.y, wo.z};
-        h.width = 2.0 * ggx_.alpha;
-        h.aspect = std::min(1.0, wo.z + ggx_.alpha);
-        return h;
-    }
-
-private:
-    Ggx ggx_;
-    Visibility vis_;
-};
 
 // The weak white furnace integrand over the whole sphere of wi (Heitz 2014):
 // D(h) G1(wo) / (4 mu_o), h the half vector; its integral is 1.
@@ -221,33 +190,6 @@ TEST(GenericLobe, WeakWhiteFurnaceOverTheSphereIsOne) {
             EXPECT_NEAR(e.value[0], 1.0, e.error[0] + 1e-9) << "alpha " << alpha << " mu " << mu;
             EXPECT_LE(e.error[0], 1e-10);
         }
-}
-
-TEST(GenericLobe, AgreesWithTheHandReducedGgxPathWithinBothEstimates) {
-    for (Visibility vis : kBoth)
-        for (double alpha : {(0.5 / 128) * (0.5 / 128), 1e-3, 0.02, 0.2, 0.6, 1.0})
-            for (double mu : {0.5 / 128, 0.05, 0.3, 0.7, 1.0}) {
-                const GgxLobe lobe(alpha, vis);
-                GenericOptions opt;
-                opt.abs_tol = 1e-9;
-                const Estimate<2> g = generic_moments<2>(lobe, mu, kSplitSumWeights, opt);
-                const Estimate<2> r = ggx_split_sum(mu, alpha, vis, 1e-9);
-                for (int c = 0; c < 2; ++c) {
-                    EXPECT_NEAR(g.value[c], r.value[c], g.error[c] + r.error[c] + 1e-14)
-                        << to_string(vis) << " alpha " << alpha << " mu " << mu << " channel " << c;
-                    // Above the tolerance only by the rounding of the directions
-                    // at the smallest alpha (generic_lobe.h).
-                    EXPECT_LE(g.error[c], alpha > 1e-3 ? 1e-9 : 3e-9);
-                }
-            }
-    // The average too.
-    GenericOptions opt;
-    opt.abs_tol = 1e-8;
-    for (double alpha : {0.05, 0.5}) {
-        const Estimate<1> g = generic_albedo_average(GgxLobe(alpha, Visibility::height_correlated), opt);
-        const Estimate<1> r = ggx_albedo_average(alpha, Visibility::height_correlated, 1e-8);
-        EXPECT_NEAR(g.value[0], r.value[0], g.error[0] + r.error[0] + 1e-14) << alpha;
-    }
 }
 
 TEST(BeckmannTables, HeldOutTexelsMatchABruteForceRuleWithin1e7) {
