@@ -308,8 +308,10 @@ std::vector<std::array<double, 2>> slope_points() {
     return pts;
 }
 
+// The checks evaluate the table at its default settings.
+constexpr Visibility kCheckVisibility = Visibility::height_correlated;
+
 std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
-    const Visibility vis = Visibility::height_correlated;  // the default settings
     if (table_id == "beckmann_dfg")
         return {
             {"B at alpha = 2e-6 vs the mirror limit (1 - mu)^5", 1e-6,
@@ -319,14 +321,14 @@ std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
             {"A + B at alpha = 2e-6 vs the mirror limit 1", 1e-6,
              [](const TexelEvaluator& e) { return worst(e, mirror_points(), -1, [](const auto&) { return 1.0; }); }},
             {"A vs a product Gauss-Legendre rule over the half vector's slope", 1e-8,
-             [vis](const TexelEvaluator& e) {
+             [](const TexelEvaluator& e) {
                  return worst(e, slope_points(), 0,
-                              [vis](const auto& p) { return slope_space_split_sum(p[0], p[1], vis)[0]; });
+                              [](const auto& p) { return slope_space_split_sum(p[0], p[1], kCheckVisibility)[0]; });
              }},
             {"B vs a product Gauss-Legendre rule over the half vector's slope", 1e-8,
-             [vis](const TexelEvaluator& e) {
+             [](const TexelEvaluator& e) {
                  return worst(e, slope_points(), 1,
-                              [vis](const auto& p) { return slope_space_split_sum(p[0], p[1], vis)[1]; });
+                              [](const auto& p) { return slope_space_split_sum(p[0], p[1], kCheckVisibility)[1]; });
              }},
         };
     if (table_id == "beckmann_albedo")
@@ -334,9 +336,9 @@ std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
             {"E at alpha = 2e-6 vs the mirror limit 1", 1e-6,
              [](const TexelEvaluator& e) { return worst(e, mirror_points(), 0, [](const auto&) { return 1.0; }); }},
             {"E vs a product Gauss-Legendre rule over the half vector's slope", 1e-8,
-             [vis](const TexelEvaluator& e) {
-                 return worst(e, slope_points(), 0, [vis](const auto& p) {
-                     const auto ab = slope_space_split_sum(p[0], p[1], vis);
+             [](const TexelEvaluator& e) {
+                 return worst(e, slope_points(), 0, [](const auto& p) {
+                     const auto ab = slope_space_split_sum(p[0], p[1], kCheckVisibility);
                      return ab[0] + ab[1];
                  });
              }},
@@ -350,7 +352,7 @@ std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
                  return CheckResult{err, "at alpha = 2e-6"};
              }},
             {"E_avg vs 2 * integral of E(mu) mu dmu, Gauss-Legendre in mu = u^4 over the slope rule", 1e-8,
-             [vis](const TexelEvaluator& e) {
+             [](const TexelEvaluator& e) {
                  // E(mu) ~ 1 + c mu ln(mu) near 0: in mu = u^4 the integrand is
                  // u^11 ln(u) at worst, which Gauss-Legendre resolves.
                  const GaussLegendre& gl = gauss_legendre(32);
@@ -359,7 +361,7 @@ std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
                  for (std::size_t j = 0; j < gl.x.size(); ++j) {
                      const double u = 0.5 * (1.0 + gl.x[j]);
                      const double u2 = u * u, mu = u2 * u2;
-                     const auto ab = slope_space_split_sum(mu, alpha, vis);
+                     const auto ab = slope_space_split_sum(mu, alpha, kCheckVisibility);
                      sum += 0.5 * gl.w[j] * 2.0 * mu * 4.0 * u2 * u * (ab[0] + ab[1]);
                  }
                  return CheckResult{std::abs(e.evaluate(&alpha, 0).value[0] - sum), "at alpha = 0.6"};
