@@ -172,6 +172,10 @@ TableDefinition make(Kind kind, std::string id, std::string description, std::ve
     d.channels = std::move(channels);
     d.options = {tables::visibility_option()};
     d.supports_monte_carlo = true;
+    // A generic-path integral costs about a millisecond a texel (the average
+    // much more): too much for identify's coarse search (see catalogue.h);
+    // `compare --as` still checks a file against these tables.
+    d.searched_by_identify = false;
     d.prepare = [kind](const TableSettings& s) {
         const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
         PreparedTable p;
