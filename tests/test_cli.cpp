@@ -64,6 +64,7 @@ TEST(Cli, BadValuesGiveAClearErrorAndNonZeroExit) {
         {"generate ggx_dfg --size 0", "--size '0'"},
         {"generate ggx_dfg --size abc", "allowed: N or NxM"},
         {"generate ggx_dfg --size 8x8x8", "more counts than any requested table has axes"},
+        {"generate ggx_albedo ggx_albedo_avg --channels R=G", "names a channel that no requested table has"},
         {"generate nope", "table 'nope' is not known; allowed: ggx_dfg"},
         {"generate ggx_dfg --pixel double", "allowed: half, float"},
         {"generate ggx_dfg --visibility smooth", "allowed: height_correlated, separable"},
