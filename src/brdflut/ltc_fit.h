@@ -10,9 +10,12 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "brdflut/generic_lobe.h"
 #include "brdflut/ltc.h"
 #include "brdflut/math.h"
 #include "brdflut/microfacet.h"
@@ -31,10 +34,14 @@ inline constexpr double kLtcMinMu = 7.963267107332633e-4;
 // direction, its exact norm n0 (the catalogue's own albedo quadrature of
 // that lobe) and where its peak is looked for (the fit's initial guess);
 // the fitter, the error figures and the light bank are the same for all.
+// Any lobe declared by its BRDF alone (generic_lobe.h) is fitted as the
+// kind `generic`, its norms by the generic path: a new lobe gets its LTC
+// tables with no numerics of its own.
 enum class LtcLobeKind {
     ggx,            // GGX microfacet (F = 1), param = alpha >= kLtcMinAlpha; n0, n1 by ggx_split_sum
     charlie_sheen,  // Charlie sheen with Neubelt's V (sheen.h), param = alpha >= kLtcSheenMinAlpha; n0 by sheen_charlie_albedo
     eon,            // EON rough diffuse at rho = 1 (oren_nayar.h), param = sigma in [0, 1]; n0 by lobe_albedo
+    generic,        // a GenericLobe, param = its roughness as the declaring table states it; n0, n1 by generic_moments
 };
 std::string to_string(LtcLobeKind kind);
 
@@ -56,13 +63,28 @@ struct LtcLobe {
     LtcLobe(double mu_o, double alpha, Visibility vis);
     // Any lobe at (mu_o, its parameter); vis is used by GGX only.
     LtcLobe(LtcLobeKind kind, double mu_o, double param, Visibility vis = Visibility::height_correlated);
+    // A lobe declared by its BRDF alone, at mu_o: f cos(theta_i) = lobe.f(wo,
+    // wi) cos(theta_i); n0 and n1 by generic_moments to norm_tolerance. param
+    // (the lobe's roughness) and key (which lobe and options, e.g. a hash of
+    // its name) identify it: two generic lobes with the same key, param and
+    // mu_o must be the same function (fits are shared by them).
+    LtcLobe(std::shared_ptr<const GenericLobe> lobe, double mu_o, double param, std::uint64_t key,
+            double norm_tolerance);
     // f cos(theta_i) for a unit direction wi; 0 below the horizon.
     double operator()(const Vec3& wi) const;
-    // Whether the lobe's peak lies near the mirror direction (GGX): its peak
-    // is then searched about it only; other lobes (retro-reflecting diffuse,
-    // sheen rings about the normal) are scanned over the whole plane of
-    // incidence.
-    bool peaks_near_mirror() const { return kind == LtcLobeKind::ggx; }
+    // Whether the lobe's peak lies near the mirror direction (GGX, and the
+    // generic lobes whose hints declare a peak): its peak is then searched
+    // about it only; other lobes (retro-reflecting diffuse, sheen rings
+    // about the normal) are scanned over the whole plane of incidence.
+    bool peaks_near_mirror() const { return peaked_; }
+
+    // The generic kind's lobe, its identity and its norms' tolerance.
+    std::shared_ptr<const GenericLobe> generic;
+    std::uint64_t key = 0;
+    double norm_tolerance = 0.0;
+
+private:
+    bool peaked_ = true;
 };
 
 // The exact norms of a lobe: n0 = int f cos, and for GGX n1 = int f (1 -
@@ -131,10 +153,12 @@ struct LtcLight {
 // degrees at 31 degrees from the normal toward the view.
 std::vector<LtcLight> ltc_fit_light_bank(double mu_o);
 // The weight of the triangular discrimination in a lobe's objective:
-// kLtcWideLobeMassWeight for the sheen and EON, 0 for GGX, whose grazing
-// rows the light term covers (src/integrate/ltc_fit.cpp, objective()).
+// kLtcWideLobeMassWeight for the wide lobes (sheen, EON, generic lobes
+// without a peak), 0 for the lobes that peak near the mirror direction
+// (GGX, generic lobes with a peak), whose grazing rows the light term
+// covers (src/integrate/ltc_fit.cpp, objective()).
 inline constexpr double kLtcWideLobeMassWeight = 0.3;
-double ltc_mass_weight(LtcLobeKind kind);
+double ltc_mass_weight(const LtcLobe& lobe);
 // The light term's weight: kLtcFitLightWeight (1 - mu_o / kLtcFitLightMu)^2
 // below kLtcFitLightMu, 0 above (src/integrate/ltc_fit.cpp says why).
 inline constexpr double kLtcFitLightWeight = 3.0;

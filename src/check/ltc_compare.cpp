@@ -53,9 +53,6 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
     }
     if (ir < 0 || imu < 0 || axes.size() != 2)
         throw Error("an LTC table has the axes " + d.def->axes[0].axis.name + " and " + d.def->axes[1].axis.name);
-    const auto vis_it = d.settings.params.find("visibility");
-    const Visibility vis =
-        visibility_from_string(vis_it == d.settings.params.end() ? "height_correlated" : vis_it->second);
     const std::size_t nc = img.channel_names.size();
     const std::size_t w = static_cast<std::size_t>(axes[0].count);
     const std::size_t n = w * static_cast<std::size_t>(axes[1].count);
@@ -71,7 +68,7 @@ LtcComparison compare_ltc_light(const ExrImage& img, const LutDescription& d, in
         const double mu = axes[static_cast<std::size_t>(imu)].value(pos[imu]);
         const double* p = &img.pixels[k * nc];
         const Mat3 minv = stored_ltc_inverse(*d.def, p);
-        const LtcLobe lobe = ltc_table_lobe(*d.def, r, mu, vis);  // as the table fits it
+        const LtcLobe lobe = ltc_table_lobe(*d.def, r, mu, d.settings.params);  // as the table fits it
         const LtcFit fit = fit_ltc(lobe);
         const std::vector<LtcTexelReport> rep = ltc_texel_reports(lobe, {{minv, fit.n0}, {fit.minv.matrix(), fit.n0}});
         const LtcTexelReport& stored = rep[0];

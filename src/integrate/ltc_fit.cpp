@@ -55,6 +55,7 @@
 #include <limits>
 #include <numeric>
 
+#include "brdflut/error.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/lobe_integrals.h"
 #include "brdflut/ltc.h"
@@ -123,7 +124,7 @@ Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
 // of by sampling, plus a multiple of the triangular discrimination T of the
 // two densities,
 //   J = int |p - D|^3 / (p + D) dw / int p^2 dw + w T,
-//   T = int (p - D)^2 / (p + D) dw,   w = ltc_mass_weight(lobe.kind).
+//   T = int (p - D)^2 / (p + D) dw,   w = ltc_mass_weight(lobe).
 // T bounds the integrated-light error of every polygon:
 // the LTC's light is n0 times its mass in the polygon and the lobe's n0
 // times p's, and the largest difference of two densities' masses over any
@@ -337,11 +338,12 @@ std::string to_string(LtcLobeKind kind) {
         case LtcLobeKind::ggx: return "ggx";
         case LtcLobeKind::charlie_sheen: return "charlie_sheen";
         case LtcLobeKind::eon: return "eon";
+        case LtcLobeKind::generic: return "generic";
     }
     return "unknown";
 }
 
-double ltc_mass_weight(LtcLobeKind kind) { return kind == LtcLobeKind::ggx ? 0.0 : kLtcWideLobeMassWeight; }
+double ltc_mass_weight(const LtcLobe& lobe) { return lobe.peaks_near_mirror() ? 0.0 : kLtcWideLobeMassWeight; }
 
 namespace {
 double clamp_param(LtcLobeKind kind, double p) {
@@ -349,6 +351,7 @@ double clamp_param(LtcLobeKind kind, double p) {
         case LtcLobeKind::ggx: return clamp_alpha(p);
         case LtcLobeKind::charlie_sheen: return std::clamp(p, kLtcSheenMinAlpha, 1.0);
         case LtcLobeKind::eon: return std::clamp(p, 0.0, 1.0);
+        case LtcLobeKind::generic: return p;  // the lobe clamps its own parameter
     }
     return p;
 }
@@ -384,7 +387,17 @@ LtcLobe::LtcLobe(double mu, double alpha, Visibility v) : LtcLobe(LtcLobeKind::g
 
 LtcLobe::LtcLobe(LtcLobeKind k, double mu, double p, Visibility v)
     : kind(k), param(clamp_param(k, p)), ggx{k == LtcLobeKind::ggx ? clamp_param(k, p) : kLtcMinAlpha}, vis(v),
-      wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)) {}
+      wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)), peaked_(k == LtcLobeKind::ggx) {
+    if (k == LtcLobeKind::generic)
+        throw Error("a generic LTC lobe is built from its GenericLobe (LtcLobe(lobe, mu_o, param, key, tolerance))");
+}
+
+LtcLobe::LtcLobe(std::shared_ptr<const GenericLobe> lobe, double mu, double p, std::uint64_t k, double tol)
+    : kind(LtcLobeKind::generic), param(p), wo(direction_from_mu(clamp_mu(mu))), mu_o(clamp_mu(mu)),
+      generic(std::move(lobe)), key(k), norm_tolerance(tol) {
+    if (!generic) throw Error("a generic LTC lobe needs its GenericLobe");
+    peaked_ = generic->hints(wo).has_peak;
+}
 
 // GGX: f cos(theta_i) = D(h) G2(o, i) / (4 mu_o), h = wo + wi (not
 // normalized). D = a^2 / (pi (sin^2 + a^2 cos^2)^2) of the half vector's
@@ -406,6 +419,7 @@ double LtcLobe::operator()(const Vec3& wi) const {
         }
         case LtcLobeKind::charlie_sheen: return charlie_sheen_brdf(Charlie{param}, wo, wi) * wi.z;
         case LtcLobeKind::eon: return Eon{FujiiOrenNayar{param}}.brdf(wo, wi) * wi.z;
+        case LtcLobeKind::generic: return generic->f(wo, wi) * wi.z;
     }
     return 0.0;
 }
@@ -431,6 +445,17 @@ LtcNorms ltc_norms(const LtcLobe& lobe) {
             const Estimate<1> e = lobe_albedo(Lobe::eon, lobe.mu_o, lobe.param, kLobeAbsTolerance);
             n.n0 = e.value[0];
             n.n0_error = e.error[0];
+            break;
+        }
+        case LtcLobeKind::generic: {
+            // The split sums {A, B}: n0 = A + B, n1 = B.
+            GenericOptions opt;
+            opt.abs_tol = lobe.norm_tolerance;
+            const Estimate<2> e = generic_moments<2>(*lobe.generic, lobe.mu_o, kSplitSumWeights, opt);
+            n.n0 = e.value[0] + e.value[1];
+            n.n1 = e.value[1];
+            n.n0_error = e.error[0] + e.error[1];
+            n.n1_error = e.error[1];
             break;
         }
     }

@@ -184,7 +184,7 @@ Setup make_setup(const LtcLobe& lobe, double n0, int radial, int azimuth) {
     // neighbouring texels at roughness 0.1 to 0.2 by up to 10 %).
     if (!lobe.peaks_near_mirror()) radial += radial / 2;
     s.grid = make_grid(lobe, n0, s.frame, radial, azimuth);
-    s.grid.mass_weight = ltc_mass_weight(lobe.kind);
+    s.grid.mass_weight = ltc_mass_weight(lobe);
     return s;
 }
 

@@ -1,5 +1,6 @@
-// LTC area-light tables fitted to the GGX, Charlie sheen and EON lobes, in the
-// layouts engines load.
+// LTC area-light tables in the layouts engines load (ltc_tables.h: how any
+// family declares one), and the LTC family: the GGX, Charlie sheen and EON
+// lobes' tables.
 //
 // Heitz, Dupuy, Hill and Neubelt 2016, "Real-Time Polygonal-Light Shading
 //   with Linearly Transformed Cosines" (ltc_1, ltc_2: selfshadow/ltc_code
@@ -9,7 +10,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <string>
 #include <vector>
 
 #include "brdflut/error.h"
@@ -26,13 +30,19 @@
 namespace brdflut {
 namespace {
 
-enum class Layout {
-    heitz_matrix,  // ltc_1: (m00, m02, m20, m22) of M^-1 / M^-1[1][1], glm m[col][row]
-    heitz_norms,   // ltc_2: (n0, n1, 0, sphere form factor)
-    norm,          // n0 alone (the lobes without a Fresnel moment)
-    hdrp_matrix,   // (m00, m20, m11, m02) of M^-1 / M^-1[2][2], HLSL _mRC
-    report,        // ltc_ggx_error and the other lobes' _error: the per-texel error figures
+using Layout = LtcLayout;
+using Options = std::map<std::string, std::string>;
+
+// The lobes of the catalogue's LTC tables by table id, recorded by
+// ltc_table() while the catalogue is built (ltc_table_lobe reads them).
+struct LobeRegistry {
+    std::mutex mutex;
+    std::map<std::string, LtcTexelLobe> lobes;
 };
+LobeRegistry& lobe_registry() {
+    static LobeRegistry r;
+    return r;
+}
 
 // The figures each texel's fit leaves for the table-wide summary, one slot
 // per texel (written only by that texel's evaluation). The matrix tables
@@ -51,14 +61,14 @@ struct TexelFit {
     LtcFit fit;
     LtcTexelReport report;
 };
-tables::SharedResults<7, TexelFit>& texel_fit_cache() {
-    static tables::SharedResults<7, TexelFit> cache(1 << 16);
+tables::SharedResults<8, TexelFit>& texel_fit_cache() {
+    static tables::SharedResults<8, TexelFit> cache(1 << 16);
     return cache;
 }
 TexelFit texel_fit(const LtcLobe& lobe, const LtcFitOptions& opt) {
     using tables::key_bits;
     return texel_fit_cache().get(
-        {tables::key_enum(lobe.kind), tables::key_enum(lobe.vis), key_bits(lobe.mu_o), key_bits(lobe.param),
+        {tables::key_enum(lobe.kind), tables::key_enum(lobe.vis), key_bits(lobe.mu_o), key_bits(lobe.param), lobe.key,
          static_cast<std::uint64_t>(opt.radial_nodes), static_cast<std::uint64_t>(opt.azimuth_nodes),
          key_bits(opt.light_tolerance)},
         [&] {
@@ -74,25 +84,17 @@ bool is_matrix(Layout l) { return l == Layout::heitz_matrix || l == Layout::hdrp
 // fit: they do not fit.
 bool fits(Layout l) { return l != Layout::heitz_norms && l != Layout::norm; }
 
-// The lobe of a texel: the roughness coordinate r mapped to the lobe's
-// parameter (GGX and Charlie alpha = r^2, HDRP's GGX at alpha >= 1e-3; EON
-// sigma = r), clamped by LtcLobe.
-LtcLobe texel_lobe(LtcLobeKind kind, Layout layout, double r, double mu, Visibility vis) {
-    if (kind == LtcLobeKind::eon) return LtcLobe(kind, mu, r, vis);
-    const double alpha = std::max(alpha_from_perceptual(r), layout == Layout::hdrp_matrix ? 1e-3 : 0.0);
-    return LtcLobe(kind, mu, alpha, vis);
-}
-
 class LtcEvaluator final : public TexelEvaluator {
 public:
-    LtcEvaluator(LtcLobeKind kind, Layout layout, Visibility vis, const LtcFitOptions& opt,
+    LtcEvaluator(LtcTexelLobe lobe, Options options, Layout layout, const LtcFitOptions& opt,
                  std::shared_ptr<FitFigures> figures)
-        : kind_(kind), layout_(layout), vis_(vis), opt_(opt), figures_(std::move(figures)) {}
+        : lobe_(std::move(lobe)), options_(std::move(options)), layout_(layout), opt_(opt),
+          figures_(std::move(figures)) {}
 
     // coords: (roughness, cos_theta) in the definition's order.
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const double r = c[0], mu = c[1];
-        const LtcLobe lobe = texel_lobe(kind_, layout_, r, mu, vis_);
+        const LtcLobe lobe = lobe_(r, mu, options_);
         TexelValue out;
         if (!fits(layout_)) {
             const LtcNorms n = ltc_norms(lobe);
@@ -138,9 +140,9 @@ public:
     }
 
 private:
-    LtcLobeKind kind_;
+    LtcTexelLobe lobe_;
+    Options options_;
     Layout layout_;
-    Visibility vis_;
     LtcFitOptions opt_;
     std::shared_ptr<FitFigures> figures_;
 };
@@ -157,38 +159,27 @@ std::string number_text(double v) {
     return b;
 }
 
-std::string rule(LtcLobeKind kind) {
-    const char* norms = kind == LtcLobeKind::ggx             ? "n0, n1 by the ggx_dfg quadrature"
-                        : kind == LtcLobeKind::charlie_sheen ? "n0 by the sheen_charlie_albedo quadrature"
-                                                             : "n0 by the eon_albedo quadrature";
+// The fit's rule for a lobe (`sample`, one texel's: whether it peaks near
+// the mirror direction sets the objective's terms and the frame).
+std::string rule(const LtcLobe& sample, const std::string& norms_rule) {
+    const double mass = ltc_mass_weight(sample);
     return std::string(
                "per texel: Nelder-Mead in double on all four parameters of a y-symmetric LTC from an initial "
                "guess computed from the texel's own lobe (its peak and half-maximum widths), restarted until it "
                "stops improving; objective int |p - D|^3 / (p + D) dw / int p^2 dw (Heitz's error measure)") +
-           (ltc_mass_weight(kind) == 0.0
-                ? std::string()
-                : " + " + number_text(ltc_mass_weight(kind)) +
-                      " int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every polygon's "
-                      "light error)") +
+           (mass == 0.0 ? std::string()
+                        : " + " + number_text(mass) +
+                              " int (p - D)^2 / (p + D) dw (the triangular discrimination, which bounds every "
+                              "polygon's light error)") +
            ", by Gauss-Legendre product quadrature in stereographic coordinates about the lobe's " +
-           (kind == LtcLobeKind::ggx ? "peak" : "normal") +
+           (sample.peaks_near_mirror() ? "peak" : "normal") +
            ", split at the horizon; + " + number_text(kLtcFitLightWeight) + " max(0, 1 - mu / " +
            number_text(kLtcFitLightMu) + ")^2 times the sum of squared differences of the "
            "LTC's light (closed form) and the lobe's (exact polygon quadrature to light_tolerance) over the "
-           "eight lights of ltc_fit_light_bank; " + norms;
+           "eight lights of ltc_fit_light_bank; " + norms_rule;
 }
 
 const char* kNormRule = "no fit: exact integrals (n0, n1) and the closed-form sphere form factor";
-
-AxisSpec roughness_axis(LtcLobeKind kind) {
-    if (kind == LtcLobeKind::eon)
-        return {Axis{"sigma", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
-                "EON (Fujii/OpenPBR) roughness sigma in [0, 1]"};
-    return {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
-            kind == LtcLobeKind::ggx ? "perceptual roughness r; GGX alpha = max(r^2, 1e-5)"
-                                     : "perceptual roughness r; Charlie alpha = max(r^2, 0.01)",
-            "", "alpha"};
-}
 
 // Rows uniform in sqrt(1 - cos theta): cos_theta from 1 down to 0, squared
 // warp (mu = 1 - u^2), end points; the lobe is evaluated at mu >= cos(1.57).
@@ -199,44 +190,7 @@ AxisSpec view_axis() {
 
 const char* kFrame = "normal +z, view (sin theta, 0, cos theta); M^-1 acts on column vectors in this frame";
 
-nlohmann::json ltc_model(LtcLobeKind kind, Visibility vis, const std::string& layout) {
-    if (kind == LtcLobeKind::charlie_sheen) {
-        nlohmann::json m = tables::charlie_sheen_model();
-        m["brdf"] = "Charlie sheen (Estevez and Kulla 2017), no Fresnel, fitted by a linearly transformed cosine";
-        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.01)";
-        m["layout"] = layout;
-        m["frame"] = kFrame;
-        return m;
-    }
-    if (kind == LtcLobeKind::eon)
-        return {{"brdf", "EON rough diffuse at rho = 1 (Portsmouth et al. 2025; FON plus the multiple-scattering "
-                         "lobe with FON's exact albedo, as eon_albedo), fitted by a linearly transformed cosine"},
-                {"roughness", "sigma in [0, 1]; sigma = 0 is Lambert"},
-                {"layout", layout},
-                {"frame", kFrame}};
-    return {{"brdf", "GGX microfacet, single scattering, fitted by a linearly transformed cosine"},
-            {"distribution", "ggx"},
-            {"visibility", to_string(vis)},
-            {"fresnel", "1 (n1 carries the Schlick moment)"},
-            {"roughness", layout == "hdrp" ? "alpha = max(perceptual_roughness^2, 1e-3)"
-                                           : "alpha = max(perceptual_roughness^2, 1e-5)"},
-            {"layout", layout},
-            {"frame", kFrame}};
-}
-
-// The error report of the lobe's tables.
-std::string report_table(LtcLobeKind kind) {
-    return kind == LtcLobeKind::ggx ? "ltc_ggx_error" : kind == LtcLobeKind::eon ? "ltc_eon_error" : "ltc_sheen_charlie_error";
-}
-
 int quality_level(Quality q) { return q == Quality::draft ? 0 : q == Quality::reference ? 2 : 1; }
-
-struct Entry {
-    LtcLobeKind lobe;
-    Layout layout;
-    std::string id, preset, description, layout_text;
-    std::vector<std::string> channels;
-};
 
 // The stored inverse matrix by rows (TableDefinition::shader_matrix), as the
 // evaluator packs it: Heitz (a, c, b, d) of [[a, 0, b], [0, 1, 0], [c, 0, d]];
@@ -244,29 +198,58 @@ struct Entry {
 const std::array<std::string, 9> kHeitzMatrix = {"R", "0", "B", "0", "1", "0", "G", "0", "A"};
 const std::array<std::string, 9> kHdrpMatrix = {"R", "0", "A", "0", "B", "0", "G", "0", "1"};
 
-TableDefinition make(const Entry& e) {
+// The options a lobe is built with: the given ones, the defaults for the rest.
+Options with_defaults(const std::vector<ModelOption>& declared, const Options& given) {
+    Options all;
+    for (const ModelOption& o : declared) all[o.name] = o.default_value;
+    for (const auto& kv : given) all[kv.first] = kv.second;
+    return all;
+}
+
+std::vector<ClosedFormCheck> layout_checks(const std::string& id, Layout layout, const std::string& parameter) {
+    switch (layout) {
+        case Layout::heitz_matrix:
+        case Layout::hdrp_matrix: return {ltc_local_minimum_check(id, parameter), ltc_metadata_maxima_check(id)};
+        case Layout::report: return {ltc_report_check(id, parameter)};
+        case Layout::heitz_norms:
+        case Layout::norm: return {};
+    }
+    return {};
+}
+
+}  // namespace
+
+std::uint64_t ltc_lobe_key(const std::string& name) {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+    for (unsigned char ch : name) h = (h ^ ch) * 1099511628211ull;
+    return h;
+}
+
+TableDefinition ltc_table(LtcTableSpec e) {
     TableDefinition d;
     d.id = e.id;
     d.description = e.description;
-    d.axes = {roughness_axis(e.lobe), view_axis()};
+    d.axes = {e.roughness, view_axis()};
     d.channels = e.channels;
-    // The fitter's GGX lobe takes the two Smith forms (not Schlick's).
-    if (e.lobe == LtcLobeKind::ggx) d.options = {tables::visibility_option({"height_correlated", "separable"})};
+    d.options = e.options;
     d.preset = e.preset;
     d.searched_by_identify = false;  // a fit per texel: see catalogue.h
-    if (is_matrix(e.layout)) {
-        d.shader_result = "ltc_inverse";
-        d.shader_matrix = e.layout == Layout::heitz_matrix ? kHeitzMatrix : kHdrpMatrix;
-    }
-    const LtcLobeKind kind = e.lobe;
     const Layout layout = e.layout;
-    const std::string layout_text = e.layout_text;
-    const std::string preset = e.preset;
-    d.prepare = [kind, layout, layout_text, preset](const TableSettings& s) {
+    if (is_matrix(layout)) {
+        d.shader_result = "ltc_inverse";
+        d.shader_matrix = layout == Layout::heitz_matrix ? kHeitzMatrix : kHdrpMatrix;
+    }
+    d.checks = layout_checks(e.id, layout, d.axes[0].axis.name);
+    for (ClosedFormCheck& c : e.checks) d.checks.push_back(std::move(c));
+    {
+        LobeRegistry& reg = lobe_registry();
+        std::lock_guard<std::mutex> lock(reg.mutex);
+        reg.lobes[e.id] = e.lobe;
+    }
+    d.prepare = [e = std::move(e)](const TableSettings& s) {
         if (s.method == Method::monte_carlo)
             throw Error("LTC tables are fitted by quadrature only; --method monte_carlo is not allowed");
-        const Visibility vis = kind == LtcLobeKind::ggx ? visibility_from_string(tables::param(s, "visibility"))
-                                                        : Visibility::height_correlated;
+        const Layout layout = e.layout;
         const LtcFitOptions opt = ltc_fit_options(quality_level(s.quality));
         std::size_t texels = 1;
         for (const Axis& a : s.axes) texels *= static_cast<std::size_t>(a.count);
@@ -279,26 +262,29 @@ TableDefinition make(const Entry& e) {
             figures->relative_l3.assign(texels, 0.0);
             figures->light_max.assign(texels, 0.0);
         }
+        // A texel's lobe (this one at roughness 0.5, mu 0.5) tells the rule
+        // whether the lobe peaks and so which terms its objective has;
+        // building it also rejects bad option values before any texel.
+        const Options options = with_defaults(e.options, s.params);
+        const LtcLobe sample = e.lobe(0.5, 0.5, options);
         PreparedTable p;
-        p.evaluator = std::make_unique<LtcEvaluator>(kind, layout, vis, opt, figures);
-        p.model = ltc_model(kind, vis, layout == Layout::hdrp_matrix ? "hdrp" : layout_text);
-        if (layout == Layout::hdrp_matrix) p.model["layout"] = layout_text;
-        p.model["preset"] = preset;
-        p.model["engine_source"] = layout == Layout::hdrp_matrix
-                                       ? "Unity-Technologies/Graphics HDRP Runtime/Material/LTCAreaLight/LTCAreaLight.hlsl"
-                                       : "selfshadow/ltc_code fit/fitLTC.cpp (packTab); three.js "
-                                         "examples/jsm/lights/RectAreaLightTexturesLib.js";
+        p.evaluator = std::make_unique<LtcEvaluator>(e.lobe, options, layout, opt, figures);
+        p.model = e.model(options);
+        p.model["layout"] = e.layout_text;
+        p.model["frame"] = kFrame;
+        p.model["preset"] = e.preset;
+        p.model["engine_source"] = e.engine_source;
         if (!fits(layout)) {
             p.method = {{"rule", kNormRule}};
             return p;
         }
-        p.method = {{"rule", rule(kind)},
+        p.method = {{"rule", rule(sample, e.norms_rule)},
                     {"objective_nodes", {{"radial", opt.radial_nodes}, {"azimuth", opt.azimuth_nodes}}}};
         if (layout == Layout::report)
             p.method["lights"] = "the bank of ltc_light_bank: squares of 1 to 60 degrees in the peak, off "
                                  "the peak and at the horizon; exact light by adaptive Gauss-Kronrod over "
                                  "the polygon, each light to light_tolerance of n0";
-        const std::string report_id = report_table(kind);
+        const std::string report_id = e.report_table;
         p.finish = [figures, layout, opt, report_id](Table& t) {
             nlohmann::json fe;
             fe["objective_max"] = *std::max_element(figures->objective.begin(), figures->objective.end());
@@ -332,71 +318,76 @@ TableDefinition make(const Entry& e) {
     return d;
 }
 
-const std::vector<std::string> kReportChannels = {
-    "relative L3 error of n0 D against f cos over the sphere", "LTC mass below the horizon (of 1)",
-    "largest integrated-light error over the light bank, as a fraction of n0",
-    "mean integrated-light error over the light bank, as a fraction of n0"};
-
-const char* kHeitzShader = "shader mat3(vec3(R, 0, G), vec3(0, 1, 0), vec3(B, 0, A))";
-const std::vector<std::string> kHeitzMatrixChannels = {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])",
-                                                        "m02 (column 0, row 2)", "m20 (column 2, row 0)", "m22"};
-
-const std::vector<Entry>& entries() {
-    static const std::vector<Entry> all = [] {
-        std::vector<Entry> v;
-        v.push_back({LtcLobeKind::ggx, Layout::heitz_matrix, "ltc_1", "ltc",
-                     "Heitz LTC ltc_1: the inverse matrix of the GGX fit divided by its middle element",
-                     std::string("Heitz ltc_1 (three.js LTC_MAT_1, EEVEE, Godot): ") + kHeitzShader,
-                     kHeitzMatrixChannels});
-        v.push_back({LtcLobeKind::ggx, Layout::heitz_norms, "ltc_2", "ltc",
-                     "Heitz LTC ltc_2: norm, Fresnel moment and the horizon-clipped sphere form factor",
-                     "Heitz ltc_2 (three.js LTC_MAT_2): specular = n0 F0 + n1 (1 - F0) times the LTC "
-                     "integral; A on its own axes",
-                     {"n0: integral of f cos(theta_i) dw_i (= ggx_albedo)",
-                      "n1: integral of f (1 - v.h)^5 cos(theta_i) dw_i (= ggx_dfg B)", "unused: 0",
-                      "sphere form factor clipped to the horizon at z = 2 u_x - 1 (cosine of the average "
-                      "light direction), len = u_y (its length)"}});
-        v.push_back({LtcLobeKind::ggx, Layout::report, "ltc_ggx_error", "ltc",
-                     "Per-texel error of the GGX LTC fit (the texels of ltc_1 and ltc_2)",
-                     "error report on the grid of ltc_1", kReportChannels});
-        v.push_back({LtcLobeKind::charlie_sheen, Layout::heitz_matrix, "ltc_sheen_charlie", "ltc",
-                     "LTC of the Charlie sheen lobe in ltc_1's layout: the inverse matrix divided by its middle "
-                     "element",
-                     std::string("ltc_1's layout (columns roughness, alpha = max(r^2, 0.01)): ") + kHeitzShader,
-                     kHeitzMatrixChannels});
-        v.push_back({LtcLobeKind::charlie_sheen, Layout::norm, "ltc_sheen_charlie_norm", "ltc",
-                     "Norm n0 of the Charlie sheen lobe on the grid of ltc_sheen_charlie",
-                     "ltc_sheen_charlie's grid: sheen = n0 times the LTC integral",
-                     {"n0: integral of f cos(theta_i) dw_i (= sheen_charlie_albedo)"}});
-        v.push_back({LtcLobeKind::charlie_sheen, Layout::report, "ltc_sheen_charlie_error", "ltc",
-                     "Per-texel error of the Charlie sheen LTC fit (the texels of ltc_sheen_charlie)",
-                     "error report on the grid of ltc_sheen_charlie", kReportChannels});
-        v.push_back({LtcLobeKind::eon, Layout::heitz_matrix, "ltc_eon", "ltc",
-                     "LTC of the EON rough diffuse lobe in ltc_1's layout: the inverse matrix divided by its "
-                     "middle element",
-                     std::string("ltc_1's layout (columns sigma): ") + kHeitzShader,
-                     kHeitzMatrixChannels});
-        v.push_back({LtcLobeKind::eon, Layout::norm, "ltc_eon_norm", "ltc",
-                     "Norm n0 of the EON lobe on the grid of ltc_eon (1 up to the quadrature: EON conserves energy)",
-                     "ltc_eon's grid: diffuse = rho n0 times the LTC integral",
-                     {"n0: integral of f cos(theta_i) dw_i (= eon_albedo)"}});
-        v.push_back({LtcLobeKind::eon, Layout::report, "ltc_eon_error", "ltc",
-                     "Per-texel error of the EON LTC fit (the texels of ltc_eon)", "error report on the grid of ltc_eon",
-                     kReportChannels});
-        v.push_back({LtcLobeKind::ggx, Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp_ltc",
-                     "HDRP LTC GGX matrix: the inverse divided by its m22 (alpha >= 1e-3)",
-                     "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the "
-                     "transposed inverse",
-                     {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)",
-                      "m11 (row 1, column 1)", "m02 (row 0, column 2)"}});
-        return v;
-    }();
-    return all;
+LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, const Options& options) {
+    LtcTexelLobe lobe;
+    std::string known;
+    {
+        LobeRegistry& reg = lobe_registry();
+        std::lock_guard<std::mutex> lock(reg.mutex);
+        const auto it = reg.lobes.find(def.id);
+        if (it != reg.lobes.end()) lobe = it->second;
+        for (const auto& kv : reg.lobes) known += (known.empty() ? "" : ", ") + kv.first;
+    }
+    if (!lobe) throw Error("table '" + def.id + "' is not an LTC table; allowed: " + known);
+    return lobe(roughness, mu, with_defaults(def.options, options));
 }
 
-}  // namespace
-
+// The LTC family: GGX (Heitz's ltc_1 and ltc_2, HDRP's matrix), the Charlie
+// sheen and EON, each with its error table.
 namespace {
+
+// The lobe of a texel: the roughness coordinate r mapped to the lobe's
+// parameter (GGX and Charlie alpha = r^2, HDRP's GGX at alpha >= 1e-3; EON
+// sigma = r), clamped by LtcLobe.
+LtcTexelLobe kind_lobe(LtcLobeKind kind, Layout layout) {
+    return [kind, layout](double r, double mu, const Options& options) {
+        if (kind == LtcLobeKind::eon) return LtcLobe(kind, mu, r);
+        const Visibility vis = kind == LtcLobeKind::ggx ? visibility_from_string(options.at("visibility"))
+                                                        : Visibility::height_correlated;
+        const double alpha = std::max(alpha_from_perceptual(r), layout == Layout::hdrp_matrix ? 1e-3 : 0.0);
+        return LtcLobe(kind, mu, alpha, vis);
+    };
+}
+
+std::string norms_rule(LtcLobeKind kind) {
+    return kind == LtcLobeKind::ggx             ? "n0, n1 by the ggx_dfg quadrature"
+           : kind == LtcLobeKind::charlie_sheen ? "n0 by the sheen_charlie_albedo quadrature"
+                                                : "n0 by the eon_albedo quadrature";
+}
+
+AxisSpec roughness_axis(LtcLobeKind kind) {
+    if (kind == LtcLobeKind::eon)
+        return {Axis{"sigma", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+                "EON (Fujii/OpenPBR) roughness sigma in [0, 1]"};
+    return {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+            kind == LtcLobeKind::ggx ? "perceptual roughness r; GGX alpha = max(r^2, 1e-5)"
+                                     : "perceptual roughness r; Charlie alpha = max(r^2, 0.01)",
+            "", "alpha"};
+}
+
+nlohmann::json ltc_model(LtcLobeKind kind, Visibility vis, const std::string& layout) {
+    if (kind == LtcLobeKind::charlie_sheen) {
+        nlohmann::json m = tables::charlie_sheen_model();
+        m["brdf"] = "Charlie sheen (Estevez and Kulla 2017), no Fresnel, fitted by a linearly transformed cosine";
+        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.01)";
+        return m;
+    }
+    if (kind == LtcLobeKind::eon)
+        return {{"brdf", "EON rough diffuse at rho = 1 (Portsmouth et al. 2025; FON plus the multiple-scattering "
+                         "lobe with FON's exact albedo, as eon_albedo), fitted by a linearly transformed cosine"},
+                {"roughness", "sigma in [0, 1]; sigma = 0 is Lambert"}};
+    return {{"brdf", "GGX microfacet, single scattering, fitted by a linearly transformed cosine"},
+            {"distribution", "ggx"},
+            {"visibility", to_string(vis)},
+            {"fresnel", "1 (n1 carries the Schlick moment)"},
+            {"roughness", layout == "hdrp" ? "alpha = max(perceptual_roughness^2, 1e-3)"
+                                           : "alpha = max(perceptual_roughness^2, 1e-5)"}};
+}
+
+// The error report of the lobe's tables.
+std::string report_table(LtcLobeKind kind) {
+    return kind == LtcLobeKind::ggx ? "ltc_ggx_error" : kind == LtcLobeKind::eon ? "ltc_eon_error" : "ltc_sheen_charlie_error";
+}
 
 using tables::CheckResult;
 
@@ -426,6 +417,7 @@ ClosedFormCheck norm_check(LtcLobeKind kind) {
                         return tables::worst_over(e, tables::grid_points({0.2, 0.5, 0.8, 1.0}, {1.0}), 0,
                                                   [](const auto& p) { return tables::charlie_albedo_normal(p[0] * p[0]); });
                     }};
+        case LtcLobeKind::generic: break;
     }
     return {};
 }
@@ -440,36 +432,98 @@ ClosedFormCheck sphere_check() {
             }};
 }
 
-std::vector<ClosedFormCheck> entry_checks(const Entry& e, const std::string& parameter) {
-    switch (e.layout) {
-        case Layout::heitz_matrix:
-            return {ltc_local_minimum_check(e.id, parameter), ltc_metadata_maxima_check(e.id)};
-        case Layout::hdrp_matrix:
-            return {ltc_local_minimum_check(e.id, parameter), ltc_metadata_maxima_check(e.id)};
-        case Layout::heitz_norms: return {norm_check(e.lobe), sphere_check()};
-        case Layout::norm: return {norm_check(e.lobe)};
-        case Layout::report: return {ltc_report_check(e.id, parameter)};
-    }
-    return {};
+const std::vector<std::string> kReportChannels = {
+    "relative L3 error of n0 D against f cos over the sphere", "LTC mass below the horizon (of 1)",
+    "largest integrated-light error over the light bank, as a fraction of n0",
+    "mean integrated-light error over the light bank, as a fraction of n0"};
+
+const char* kHeitzShader = "shader mat3(vec3(R, 0, G), vec3(0, 1, 0), vec3(B, 0, A))";
+const std::vector<std::string> kHeitzMatrixChannels = {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])",
+                                                        "m02 (column 0, row 2)", "m20 (column 2, row 0)", "m22"};
+
+// A table of the family: its lobe kind, layout and texts.
+LtcTableSpec spec(LtcLobeKind kind, Layout layout, std::string id, std::string preset, std::string description,
+                  std::string layout_text, std::vector<std::string> channels) {
+    LtcTableSpec e;
+    e.id = std::move(id);
+    e.preset = std::move(preset);
+    e.description = std::move(description);
+    e.layout = layout;
+    e.layout_text = std::move(layout_text);
+    e.channels = std::move(channels);
+    e.roughness = roughness_axis(kind);
+    // The fitter's GGX lobe takes the two Smith forms (not Schlick's).
+    if (kind == LtcLobeKind::ggx) e.options = {tables::visibility_option({"height_correlated", "separable"})};
+    const std::string model_layout = layout == Layout::hdrp_matrix ? "hdrp" : e.layout_text;
+    e.model = [kind, model_layout](const Options& options) {
+        return ltc_model(kind, kind == LtcLobeKind::ggx ? visibility_from_string(options.at("visibility"))
+                                                        : Visibility::height_correlated,
+                         model_layout);
+    };
+    e.engine_source = layout == Layout::hdrp_matrix
+                          ? "Unity-Technologies/Graphics HDRP Runtime/Material/LTCAreaLight/LTCAreaLight.hlsl"
+                          : "selfshadow/ltc_code fit/fitLTC.cpp (packTab); three.js "
+                            "examples/jsm/lights/RectAreaLightTexturesLib.js";
+    e.norms_rule = norms_rule(kind);
+    e.report_table = report_table(kind);
+    e.lobe = kind_lobe(kind, layout);
+    if (layout == Layout::heitz_norms) e.checks = {norm_check(kind), sphere_check()};
+    if (layout == Layout::norm) e.checks = {norm_check(kind)};
+    return e;
 }
 
 }  // namespace
 
 void register_ltc_family(FamilyEntries& family) {
+    using K = LtcLobeKind;
     std::vector<TableDefinition>& out = family.tables;
-    for (const Entry& e : entries()) {
-        TableDefinition d = make(e);
-        d.checks = entry_checks(e, d.axes[0].axis.name);
-        out.push_back(std::move(d));
-    }
-}
-
-LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, Visibility vis) {
-    for (const Entry& e : entries())
-        if (e.id == def.id) return texel_lobe(e.lobe, e.layout, roughness, mu, vis);
-    std::string known;
-    for (const Entry& e : entries()) known += (known.empty() ? "" : ", ") + e.id;
-    throw Error("table '" + def.id + "' is not an LTC table; allowed: " + known);
+    out.push_back(ltc_table(spec(K::ggx, Layout::heitz_matrix, "ltc_1", "ltc",
+                                 "Heitz LTC ltc_1: the inverse matrix of the GGX fit divided by its middle element",
+                                 std::string("Heitz ltc_1 (three.js LTC_MAT_1, EEVEE, Godot): ") + kHeitzShader,
+                                 kHeitzMatrixChannels)));
+    out.push_back(ltc_table(spec(K::ggx, Layout::heitz_norms, "ltc_2", "ltc",
+                                 "Heitz LTC ltc_2: norm, Fresnel moment and the horizon-clipped sphere form factor",
+                                 "Heitz ltc_2 (three.js LTC_MAT_2): specular = n0 F0 + n1 (1 - F0) times the LTC "
+                                 "integral; A on its own axes",
+                                 {"n0: integral of f cos(theta_i) dw_i (= ggx_albedo)",
+                                  "n1: integral of f (1 - v.h)^5 cos(theta_i) dw_i (= ggx_dfg B)", "unused: 0",
+                                  "sphere form factor clipped to the horizon at z = 2 u_x - 1 (cosine of the average "
+                                  "light direction), len = u_y (its length)"})));
+    out.push_back(ltc_table(spec(K::ggx, Layout::report, "ltc_ggx_error", "ltc",
+                                 "Per-texel error of the GGX LTC fit (the texels of ltc_1 and ltc_2)",
+                                 "error report on the grid of ltc_1", kReportChannels)));
+    out.push_back(ltc_table(spec(K::charlie_sheen, Layout::heitz_matrix, "ltc_sheen_charlie", "ltc",
+                                 "LTC of the Charlie sheen lobe in ltc_1's layout: the inverse matrix divided by its "
+                                 "middle element",
+                                 std::string("ltc_1's layout (columns roughness, alpha = max(r^2, 0.01)): ") +
+                                     kHeitzShader,
+                                 kHeitzMatrixChannels)));
+    out.push_back(ltc_table(spec(K::charlie_sheen, Layout::norm, "ltc_sheen_charlie_norm", "ltc",
+                                 "Norm n0 of the Charlie sheen lobe on the grid of ltc_sheen_charlie",
+                                 "ltc_sheen_charlie's grid: sheen = n0 times the LTC integral",
+                                 {"n0: integral of f cos(theta_i) dw_i (= sheen_charlie_albedo)"})));
+    out.push_back(ltc_table(spec(K::charlie_sheen, Layout::report, "ltc_sheen_charlie_error", "ltc",
+                                 "Per-texel error of the Charlie sheen LTC fit (the texels of ltc_sheen_charlie)",
+                                 "error report on the grid of ltc_sheen_charlie", kReportChannels)));
+    out.push_back(ltc_table(spec(K::eon, Layout::heitz_matrix, "ltc_eon", "ltc",
+                                 "LTC of the EON rough diffuse lobe in ltc_1's layout: the inverse matrix divided by "
+                                 "its middle element",
+                                 std::string("ltc_1's layout (columns sigma): ") + kHeitzShader,
+                                 kHeitzMatrixChannels)));
+    out.push_back(ltc_table(spec(K::eon, Layout::norm, "ltc_eon_norm", "ltc",
+                                 "Norm n0 of the EON lobe on the grid of ltc_eon (1 up to the quadrature: EON "
+                                 "conserves energy)",
+                                 "ltc_eon's grid: diffuse = rho n0 times the LTC integral",
+                                 {"n0: integral of f cos(theta_i) dw_i (= eon_albedo)"})));
+    out.push_back(ltc_table(spec(K::eon, Layout::report, "ltc_eon_error", "ltc",
+                                 "Per-texel error of the EON LTC fit (the texels of ltc_eon)",
+                                 "error report on the grid of ltc_eon", kReportChannels)));
+    out.push_back(ltc_table(spec(K::ggx, Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp_ltc",
+                                 "HDRP LTC GGX matrix: the inverse divided by its m22 (alpha >= 1e-3)",
+                                 "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the "
+                                 "transposed inverse",
+                                 {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)",
+                                  "m11 (row 1, column 1)", "m02 (row 0, column 2)"})));
 }
 
 }  // namespace brdflut
