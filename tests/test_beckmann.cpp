@@ -12,8 +12,12 @@
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
 #include "brdflut/generic_lobe.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
+#include "brdflut/random.h"
+#include "brdflut/verify.h"
+#include "tables/ltc_tables.h"
 #include "tables/registry.h"
 #include "test_support.h"
 
@@ -342,3 +346,86 @@ TEST(BeckmannTables, IndependentChecksPassAndCatchAWrongTable) {
         }
     }
 }
+
+// HDRP's Cook-Torrance LTC layer: the Beckmann lobe with the V-cavity G,
+// fitted through the generic path.
+namespace brdflut {
+namespace {
+
+TEST(BeckmannModel, VCavityBrdfIsCookAndTorrancesFormula) {
+    // D G / (4 n.o n.i), G = min(1, 2 (n.h)(n.o) / (o.h), 2 (n.h)(n.i) / (i.h))
+    // with the normalized half vector and D from cos(theta_h), written out.
+    const Beckmann b{0.35};
+    Rng rng(7, 0);
+    for (int k = 0; k < 200; ++k) {
+        const double u[3] = {rng.uniform(), rng.uniform(), rng.uniform()};
+        const double mo = 0.02 + 0.98 * u[0], mi = 0.02 + 0.98 * u[1], phi = kTwoPi * u[2];
+        const Vec3 wo{std::sqrt(1 - mo * mo), 0.0, mo};
+        const Vec3 wi{std::sqrt(1 - mi * mi) * std::cos(phi), std::sqrt(1 - mi * mi) * std::sin(phi), mi};
+        Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+        const double len = std::sqrt(dot(h, h));
+        h = {h.x / len, h.y / len, h.z / len};
+        const double g = std::min({1.0, 2.0 * h.z * wo.z / dot(wo, h), 2.0 * h.z * wi.z / dot(wi, h)});
+        const double want = b.D(h.z) * g / (4.0 * wo.z * wi.z);
+        EXPECT_NEAR(b.brdf_v_cavity(wo, wi), want, 1e-11 * want) << k;
+    }
+}
+
+TEST(BeckmannLtc, CookTorranceNormAtNormalViewIsTheSlopeIntegral) {
+    // At normal view o.h = n.h and n.i <= 1, so G = min(1, 2 cos(2 theta_h));
+    // with u = tan^2(theta_h), D cos(theta_h) dw_h = exp(-u / alpha^2) du /
+    // alpha^2 dphi / (2 pi), and n0 = int_0^1 min(1, 2 (1 - u)/(1 + u))
+    // exp(-u / alpha^2) du / alpha^2: 1 - exp(-1/(3 alpha^2)) below u = 1/3
+    // and a smooth integral above it (Gauss-Legendre). The table's lobe and
+    // its norm come from the generic path.
+    const TableDefinition& def = find_table("hdrp_ltc_cook_torrance");
+    const GaussLegendre& gl = gauss_legendre(40);
+    for (double r : {0.55, 0.8, 1.0}) {
+        const double alpha = r * r, a2 = alpha * alpha;
+        double tail = 0.0;
+        for (std::size_t j = 0; j < gl.x.size(); ++j) {
+            const double u = 2.0 / 3.0 + gl.x[j] / 3.0;  // [1/3, 1]
+            tail += gl.w[j] / 3.0 * 2.0 * (1.0 - u) / (1.0 + u) * std::exp(-u / a2) / a2;
+        }
+        const double want = -std::expm1(-1.0 / (3.0 * a2)) + tail;
+        const LtcNorms n = ltc_norms(ltc_table_lobe(def, r, 1.0));
+        EXPECT_NEAR(n.n0, want, n.n0_error + 1e-12) << "roughness " << r;
+        EXPECT_GT(n.n0_error, 0.0);
+    }
+}
+
+TEST(BeckmannLtc, CookTorranceLobeIsTheVCavityBeckmannAtHdrpsAlpha) {
+    // The table fits f cos of the V-cavity Beckmann lobe at alpha = max(r^2,
+    // 0.002), the clamp of HDRP's BRDF_CookTorrance.Eval.
+    const TableDefinition& def = find_table("hdrp_ltc_cook_torrance");
+    for (double r : {0.0, 0.03, 0.5, 1.0})
+        for (double mu : {1.0, 0.6, 0.1}) {
+            const LtcLobe lobe = ltc_table_lobe(def, r, mu);
+            const double alpha = std::max(r * r, 0.002);
+            EXPECT_EQ(lobe.kind, LtcLobeKind::generic);
+            EXPECT_DOUBLE_EQ(lobe.param, alpha);
+            const Beckmann b{alpha};
+            for (double t : {-0.5, 0.0, 0.3, 1.2}) {
+                const Vec3 wi{std::sin(t), 0.0, std::cos(t)};
+                EXPECT_DOUBLE_EQ(lobe(wi), b.brdf_v_cavity(lobe.wo, wi) * wi.z) << r << " " << mu << " " << t;
+            }
+        }
+}
+
+TEST(BeckmannLtc, CookTorranceTablesPassVerifyAndAreTheSameForAnyThreadCount) {
+    for (const char* id : {"hdrp_ltc_cook_torrance", "hdrp_ltc_cook_torrance_error"}) {
+        const TableDefinition& def = find_table(id);
+        const std::vector<CheckRow> rows = verify_table(def);
+        ASSERT_FALSE(rows.empty()) << id;
+        for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
+        TableSettings s = default_settings(def);
+        s.axes[0].count = 5;
+        s.axes[1].count = 4;
+        const Table a = test::generate_fresh(def, s, 1), b = test::generate_fresh(def, s, 2);
+        EXPECT_EQ(a.values, b.values) << id;
+        EXPECT_EQ(a.method.dump(), b.method.dump()) << id;
+    }
+}
+
+}  // namespace
+}  // namespace brdflut

@@ -92,6 +92,11 @@ struct Beckmann {
     // for alpha down to 1e-7 and below.
     double brdf(const Vec3& wo, const Vec3& wi, Visibility vis) const;
 
+    // The same with Cook and Torrance's V-cavity shadowing-masking in place
+    // of Smith's: G = min(1, 2 (n.h) min(n.o, n.i) / (o.h)) (o.h = i.h), the
+    // Cook-Torrance BRDF that HDRP's Cook-Torrance LTC layer fits.
+    double brdf_v_cavity(const Vec3& wo, const Vec3& wi) const;
+
     // A normal drawn with density D(m) cos(theta_m) from two uniform numbers
     // in [0, 1): tan^2(theta_m) = -alpha^2 ln(1 - u1), phi = 2 pi u2.
     Vec3 sample_normal(double u1, double u2) const;
@@ -105,7 +110,15 @@ struct Beckmann {
 class BeckmannLobe final : public GenericLobe {
 public:
     BeckmannLobe(double alpha, Visibility vis) : model_{alpha}, vis_(vis) {}
-    double f(const Vec3& wo, const Vec3& wi) const override { return model_.brdf(wo, wi, vis_); }
+    // The Cook-Torrance lobe: Beckmann D with the V-cavity G (brdf_v_cavity).
+    static BeckmannLobe v_cavity(double alpha) {
+        BeckmannLobe l(alpha, Visibility::height_correlated);
+        l.v_cavity_ = true;
+        return l;
+    }
+    double f(const Vec3& wo, const Vec3& wi) const override {
+        return v_cavity_ ? model_.brdf_v_cavity(wo, wi) : model_.brdf(wo, wi, vis_);
+    }
     LobeHints hints(const Vec3& wo) const override;
     bool has_sampler() const override { return true; }
     LobeSample sample(const Vec3& wo, double u1, double u2) const override;
@@ -114,6 +127,7 @@ public:
 private:
     Beckmann model_;
     Visibility vis_;
+    bool v_cavity_ = false;
 };
 
 }  // namespace brdflut

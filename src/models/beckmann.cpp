@@ -44,6 +44,16 @@ double Beckmann::brdf(const Vec3& wo, const Vec3& wi, Visibility vis) const {
     return D_from_tan2(t2, c2) * g2 / (4.0 * wo.z * wi.z);
 }
 
+double Beckmann::brdf_v_cavity(const Vec3& wo, const Vec3& wi) const {
+    if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+    const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};  // not normalized: G takes a ratio
+    const double t2 = (h.x * h.x + h.y * h.y) / (h.z * h.z);
+    const double c2 = 1.0 / (1.0 + t2);
+    const double o_h = dot(wo, h);
+    const double g = std::min(1.0, 2.0 * h.z * std::min(wo.z, wi.z) / o_h);
+    return D_from_tan2(t2, c2) * g / (4.0 * wo.z * wi.z);
+}
+
 Vec3 Beckmann::sample_normal(double u1, double u2) const {
     const double t2 = -alpha * alpha * std::log1p(-u1);
     const double c = 1.0 / std::sqrt(1.0 + t2);

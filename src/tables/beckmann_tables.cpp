@@ -13,6 +13,8 @@
 #include "brdflut/generic_lobe.h"
 #include "brdflut/random.h"
 #include "brdflut/verify.h"
+#include "tables/checks.h"
+#include "tables/ltc_tables.h"
 #include "tables/registry.h"
 #include "tables/shared_results.h"
 
@@ -374,6 +376,51 @@ std::vector<ClosedFormCheck> beckmann_checks(const std::string& table_id) {
     return {};
 }
 
+// ---------------------------------------------------------------------------
+// HDRP's Cook-Torrance LTC layer (the AxF material's): the Beckmann lobe with
+// the V-cavity G, fitted through the generic path (LtcLobe's generic kind)
+// on HDRP's grid and in its packing, as hdrp_ltc_ggx: 64x64, roughness
+// r = i/63 with alpha = max(r^2, 0.002) (BRDF_CookTorrance.Eval's clamp),
+// rows cos(theta) = 1 - (j/63)^2.
+
+constexpr double kCookTorranceMinAlpha = 0.002;
+const char* kCookTorranceSource =
+    "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition Runtime/Material/LTCAreaLight/"
+    "BRDF/BRDF_CookTorrance.cs @85949ee7c210cef38bebb29810f2f7cad75c28f5 (the lobe; HDRP's own fit on this "
+    "grid: Generated/LtcData.BRDF_CookTorrance.cs), LTCAreaLight.hlsl (the packing)";
+
+LtcTableSpec cook_torrance_ltc(LtcLayout layout, std::string id, std::string description, std::string layout_text,
+                               std::vector<std::string> channels) {
+    LtcTableSpec e;
+    e.id = std::move(id);
+    e.preset = "hdrp_ltc";
+    e.description = std::move(description);
+    e.layout = layout;
+    e.layout_text = std::move(layout_text);
+    e.channels = std::move(channels);
+    e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+                   "perceptual roughness r; Beckmann alpha = max(r^2, 0.002)", "", "alpha"};
+    e.model = [](const std::map<std::string, std::string>&) {
+        nlohmann::json m = beckmann_model(Visibility::height_correlated);
+        m["brdf"] = "Cook-Torrance: Beckmann microfacet with the V-cavity shadowing-masking, single scattering, "
+                    "fitted by a linearly transformed cosine";
+        m["visibility"] = "v_cavity: G = min(1, 2 (n.h) min(n.v, n.l) / (v.h)) (Cook and Torrance 1982)";
+        m.erase("lambda");
+        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.002) (the clamp of HDRP's BRDF_CookTorrance)";
+        return m;
+    };
+    e.engine_source = kCookTorranceSource;
+    e.norms_rule = "n0 by the generic lobe path (as beckmann_albedo, to 1e-8)";
+    e.report_table = "hdrp_ltc_cook_torrance_error";
+    const std::uint64_t key = ltc_lobe_key("beckmann_v_cavity");
+    e.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
+        const double alpha = std::max(alpha_from_perceptual(r), kCookTorranceMinAlpha);
+        return LtcLobe(std::make_shared<const BeckmannLobe>(BeckmannLobe::v_cavity(alpha)), mu, alpha, key,
+                       kBeckmannTableTolerance);
+    };
+    return e;
+}
+
 }  // namespace
 
 void register_beckmann_family(FamilyEntries& family) {
@@ -391,6 +438,19 @@ void register_beckmann_family(FamilyEntries& family) {
                        {beckmann_alpha_axis()}, {"E_avg: 2 * integral of E(mu) mu dmu"}));
     for (TableDefinition& d : out)
         if (d.checks.empty()) d.checks = beckmann_checks(d.id);
+    out.push_back(ltc_table(cook_torrance_ltc(
+        LtcLayout::hdrp_matrix, "hdrp_ltc_cook_torrance",
+        "HDRP LTC Cook-Torrance matrix (Beckmann, V-cavity G): the inverse divided by its m22 (alpha >= 0.002)",
+        "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the transposed inverse",
+        {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)", "m11 (row 1, column 1)",
+         "m02 (row 0, column 2)"})));
+    out.push_back(ltc_table(cook_torrance_ltc(
+        LtcLayout::report, "hdrp_ltc_cook_torrance_error",
+        "Per-texel error of the Cook-Torrance LTC fit (the texels of hdrp_ltc_cook_torrance)",
+        "error report on the grid of hdrp_ltc_cook_torrance",
+        {"relative L3 error of n0 D against f cos over the sphere", "LTC mass below the horizon (of 1)",
+         "largest integrated-light error over the light bank, as a fraction of n0",
+         "mean integrated-light error over the light bank, as a fraction of n0"})));
 
     const std::pair<std::string, std::string> hc{"visibility", "height_correlated"},
         sep{"visibility", "separable"};
