@@ -25,10 +25,15 @@
 // every psi for theta <= theta_a = asin(p.z) (the peak's elevation), a
 // clipped range [0, psi_max] for theta_a < theta < pi - theta_a, none beyond.
 // The clip is applied analytically, so the psi integrand is smooth on its
-// range. The theta axis is split at theta_a, at the width w and at every
-// declared kink; pieces below w are integrated in s = theta^2 (uniform in
-// area near the peak), pieces above it in ln(theta) (so that a lobe of width
-// w, or its tail, takes the same number of nodes whatever w is); an end at
+// range; so are the cones a lobe declares as its support (LobeHints::
+// support: a cone about an axis d in the x-z plane meets a ring where
+// wi.d = cos(theta) p.d + sin(theta) cos(psi) e1.d, linear in cos(psi), as
+// the horizon does), and a ring is split where it crosses a declared kink
+// cone. The theta axis is split at theta_a, at the width w, at every
+// declared kink and where the rings touch a declared cone; pieces below w
+// are integrated in s = theta^2 (uniform in area near the peak), pieces
+// above it in ln(theta) (so that a lobe of width w, or its tail, takes the
+// same number of nodes whatever w is); an end at
 // the horizon clip or at a kink is flattened by a polynomial change of
 // variable (the psi integral has a (theta - theta_a)^(3/2) kink there). The
 // azimuth is integrated in psi' with tan(psi) = rho tan(psi'), rho(theta) =
@@ -39,6 +44,23 @@
 // outer weight requires, and its error estimate is integrated along with
 // the values, so the reported error (QUADPACK estimate of the outer rule
 // plus the integrated inner estimates) covers both levels.
+//
+// Below the horizon. A transmission lobe (a BTDF, f_t(wo, wi) for wi.z < 0)
+// is declared the same way, its peak below the horizon (the refracted
+// direction), and integrated with LobeDomain::lower_hemisphere:
+//
+//   M_k(mu_o) = integral over wi.z < 0 of f(wo, wi) w_k(wo.h) |cos(theta_i)| dw_i.
+//
+// That is the integral above of the mirror image: wi' = (wi.x, wi.y, -wi.z)
+// and the peak mirrored the same way lie in the upper hemisphere, the frame,
+// the horizon clip and the break points are built there as above, and f and
+// the weights are evaluated at wi itself. h stays the half vector wo + wi
+// (normalized), which is not the microfacet normal of a refraction: a
+// transmission lobe's moment of weight 1 (its albedo) is the one with a
+// meaning. A lobe without a peak is then taken in coordinates about -z.
+// Hints are those of the lobe as it is, below the horizon (width and
+// aspect of the refracted peak, kinks about it). The Monte Carlo estimates
+// cover the upper hemisphere only.
 //
 // Requirements on the lobe: f is even in wi.y for wo in the x-z plane (an
 // isotropic BRDF), the peak lies in the x-z plane, f is finite and
@@ -66,11 +88,22 @@
 
 namespace brdflut {
 
+// The directions within angle (radians, in [0, pi]) of the unit axis (in
+// the x-z plane; for LobeDomain::lower_hemisphere mirrored with the peak, so
+// given as it is). The polar angles about the peak where a ring touches the
+// cone's edge (|gamma - angle|, gamma + angle, 2 pi - gamma - angle; gamma
+// the axis's polar angle) are break points of the theta axis.
+struct LobeCone {
+    Vec3 axis{0.0, 0.0, 1.0};
+    double angle = kPi;
+};
+
 // The shape of a lobe seen from one view direction wo.
 struct LobeHints {
-    // Unit direction where the lobe peaks (upper hemisphere, in the x-z
-    // plane); without a peak the polar coordinates are taken about the
-    // normal with width 1.
+    // Unit direction where the lobe peaks (in the x-z plane; in the upper
+    // hemisphere, or in the lower one for LobeDomain::lower_hemisphere);
+    // without a peak the polar coordinates are taken about the normal
+    // (-z below) with width 1.
     bool has_peak = false;
     Vec3 peak{0.0, 0.0, 1.0};
     // Angular scale (radians) of the peak in the plane of the peak and the
@@ -81,6 +114,17 @@ struct LobeHints {
     double aspect = 1.0;
     // Polar angles about the peak (radians) where f has a kink or a jump.
     std::vector<double> kinks;
+    // Cones (see LobeCone) that bound the lobe's support: f is 0 outside
+    // any of them. Each ring is clipped to them as to the horizon, so a lobe
+    // that ends inside the domain (a refraction lobe ends at the largest
+    // deviation from -wo, and where its microfacet normal reaches the
+    // horizon) is integrated on its support only, where the rules see it
+    // whole.
+    std::vector<LobeCone> support;
+    // Cones across which f has a kink or a jump (a Fresnel factor's
+    // critical angle is a cone about wo): each ring is split where it
+    // crosses one.
+    std::vector<LobeCone> kink_cones;
 };
 
 // A direction drawn by a lobe's sampler and its density (per solid angle).
@@ -92,7 +136,8 @@ struct LobeSample {
 class GenericLobe {
 public:
     virtual ~GenericLobe() = default;
-    // The BRDF without the cosine, for unit wo (wo.z > 0, wo.y = 0) and wi.
+    // The BRDF without the cosine, for unit wo (wo.z > 0, wo.y = 0) and wi
+    // (wi.z < 0 for a transmission lobe: the BTDF).
     virtual double f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual LobeHints hints(const Vec3& /*wo*/) const { return {}; }
     // An importance sampler (optional): its density must be positive
@@ -125,6 +170,7 @@ inline constexpr std::array<MomentWeight, 2> kSplitSumWeights = {MomentWeight{mo
 enum class LobeDomain {
     hemisphere,  // f w_k cos(theta_i) over wi.z > 0 (the moments)
     sphere,      // f w_k over every wi, no cosine (for identities such as the weak white furnace)
+    lower_hemisphere,  // f w_k |cos(theta_i)| over wi.z < 0 (a transmission lobe; see "Below the horizon")
 };
 
 // At mu_o = 0 the moments are evaluated at this view cosine (their limit).
@@ -152,8 +198,8 @@ Estimate<N> generic_moment_average(const GenericLobe& lobe, const std::array<Mom
                                    const GenericOptions& opt = {});
 Estimate<1> generic_albedo_average(const GenericLobe& lobe, const GenericOptions& opt = {});
 
-// Monte Carlo: wi from the lobe's sampler if it has one, else cosine
-// weighted; value = the mean of f w_k cos / pdf, error = its standard error.
+// Monte Carlo (the upper hemisphere): wi from the lobe's sampler if it has
+// one, else cosine weighted; value = the mean of f w_k cos / pdf, error = its standard error.
 // Seeded and reproducible.
 template <std::size_t N>
 Estimate<N> generic_moments_mc(const GenericLobe& lobe, double mu_o, const std::array<MomentWeight, N>& weights,

@@ -44,6 +44,13 @@ constexpr double kMaxNestedTol = 1e-5;
 // largest components.
 constexpr double kDirectionUlp = 0x1.0p-53;
 
+// A cone of LobeHints in the frame: wi.d > cos(beta) inside, gamma the
+// polar angle of its axis d about the peak.
+struct FrameCone {
+    Vec3 d;
+    double beta, cos_beta, gamma;
+};
+
 // The view direction, the lobe's frame and its shape.
 struct Frame {
     Vec3 wo;
@@ -52,6 +59,12 @@ struct Frame {
     double theta_a = 0.0;  // below: whole rings above the horizon
     double theta_end = kPi;
     bool hemisphere = true;
+    // Over the lower hemisphere: the frame and the polar coordinates are
+    // those of the mirror image (wi.z -> -wi.z), f sees wi itself.
+    bool below = false;
+    // The declared cones (LobeHints::support, kink_cones), their axes in
+    // the frame's hemisphere.
+    std::vector<FrameCone> support, kink_cones;
     bool has_peak = false;
     // Over the sphere: the polar position of wi = -wo, where the half vector
     // is undefined and f has a direction-dependent limit (theta_star < 0:
@@ -67,8 +80,10 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
     fr.wo = {sin_o, 0.0, mu_o};
     const LobeHints h = lobe.hints(fr.wo);
     fr.has_peak = h.has_peak;
+    fr.below = domain == LobeDomain::lower_hemisphere;
     if (h.has_peak) {
         fr.p = h.peak;
+        if (fr.below) fr.p.z = -fr.p.z;
         fr.w = std::clamp(h.width, 1e-12, 1.0);
         fr.aspect = std::clamp(h.aspect, 1e-12, 1.0);
     } else {
@@ -90,7 +105,7 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
     // / (w a) that no quadrature removes (it shows at grazing view with
     // alpha below 1e-4, where w a ~ 2 alpha^2). Bounded generously.
     if (fr.has_peak) fr.rel_rounding = 2.0 * kDirectionUlp / (fr.w * fr.aspect);
-    fr.hemisphere = domain == LobeDomain::hemisphere;
+    fr.hemisphere = domain != LobeDomain::sphere;
     if (fr.hemisphere) {
         fr.theta_a = std::atan2(std::max(fr.p.z, 0.0), ph);
         fr.theta_end = kPi - fr.theta_a;
@@ -101,6 +116,21 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
         fr.theta_star = std::acos(std::clamp(dot(fr.p, d), -1.0, 1.0));
         fr.psi_star = std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)));
     }
+    auto frame_cone = [&](const LobeCone& c) {
+        const double dl = std::sqrt(dot(c.axis, c.axis));
+        FrameCone k;
+        k.d = {c.axis.x / dl, c.axis.y / dl, (fr.below ? -c.axis.z : c.axis.z) / dl};
+        k.beta = std::clamp(c.angle, 0.0, kPi);
+        k.cos_beta = std::cos(k.beta);
+        k.gamma = std::acos(std::clamp(dot(fr.p, k.d), -1.0, 1.0));
+        return k;
+    };
+    for (const LobeCone& c : h.support) {
+        fr.support.push_back(frame_cone(c));
+        // No ring beyond the polar angle gamma + beta reaches into the cone.
+        fr.theta_end = std::min(fr.theta_end, fr.support.back().gamma + fr.support.back().beta);
+    }
+    for (const LobeCone& c : h.kink_cones) fr.kink_cones.push_back(frame_cone(c));
     return fr;
 }
 
@@ -122,12 +152,14 @@ struct RingIntegrand {
         const double cp = cs / q, sp = rho * sn / q;
         const double jac = rho / q2;
         const double a = sin_t * cp, b = sin_t * sp;
-        const Vec3 wi{cos_t * fr.p.x + a * fr.e1.x + b * fr.e2.x, cos_t * fr.p.y + a * fr.e1.y + b * fr.e2.y,
-                      cos_t * fr.p.z + a * fr.e1.z + b * fr.e2.z};
+        Vec3 wi{cos_t * fr.p.x + a * fr.e1.x + b * fr.e2.x, cos_t * fr.p.y + a * fr.e1.y + b * fr.e2.y,
+                cos_t * fr.p.z + a * fr.e1.z + b * fr.e2.z};
         double v;
         if (fr.hemisphere) {
-            if (!(wi.z > 0.0)) return y;
-            v = lobe.f(fr.wo, wi) * wi.z * jac;
+            const double cos_i = wi.z;  // |cos(theta_i)|: wi is the mirror image below
+            if (!(cos_i > 0.0)) return y;
+            if (fr.below) wi.z = -cos_i;
+            v = lobe.f(fr.wo, wi) * cos_i * jac;
         } else {
             v = lobe.f(fr.wo, wi) * jac;
         }
@@ -163,6 +195,34 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
             }
         }
     }
+    // The ring crosses a cone where wi.d - cos(beta) = base + up cos(psi)
+    // changes sign, at most once in [0, pi]: {-1: the ring is outside, 1:
+    // inside, 0: inside for psi' below (up > 0) or above (up < 0) the
+    // crossing v}.
+    struct Crossing {
+        int whole;
+        double v;
+        bool inside_below;
+    };
+    auto cross = [&](const FrameCone& k) -> Crossing {
+        const double up = sin_t * dot(fr.e1, k.d), base = cos_t * dot(fr.p, k.d) - k.cos_beta;
+        if (up == 0.0) return {base > 0.0 ? 1 : -1, 0.0, false};
+        const double c = -base / up;
+        if (up > 0.0 ? c >= 1.0 : c <= -1.0) return {-1, 0.0, false};
+        if (up > 0.0 ? c <= -1.0 : c >= 1.0) return {1, 0.0, false};
+        const double s = std::sqrt((1.0 - c) * (1.0 + c));
+        return {0, std::atan2(s, rho * c), up > 0.0};
+    };
+    double begin = 0.0;
+    for (const FrameCone& k : fr.support) {
+        const Crossing x = cross(k);
+        if (x.whole < 0) return out;
+        if (x.whole == 0) {
+            if (x.inside_below) end = std::min(end, x.v);
+            else begin = std::max(begin, x.v);
+        }
+    }
+    if (!(begin < end)) return out;
     const RingIntegrand f{lobe, fr, weights, n, cos_t, sin_t, rho, evaluations};
     AdaptiveOptions opt;
     opt.rule = KronrodRule::k21;
@@ -173,7 +233,7 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     // Start from one panel, or, on the sphere next to the point wi = -wo,
     // from panels that isolate it (the ring passes within |theta -
     // theta_star| of it, where f turns over an arc of about that length).
-    std::vector<double> cuts{0.0};
+    std::vector<double> cuts{begin};
     if (fr.theta_star >= 0.0 && sin_t > 0.0) {
         const double half = 2.0 * std::abs(theta - fr.theta_star) / sin_t;
         if (half < 0.25 * kPi)
@@ -182,6 +242,11 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
                 if (psi > 0.0 && psi < kPi && v > cuts.back() && v < end) cuts.push_back(v);
             }
     }
+    for (const FrameCone& k : fr.kink_cones) {
+        const Crossing x = cross(k);
+        if (x.whole == 0 && x.v > begin && x.v < end) cuts.push_back(x.v);
+    }
+    std::sort(cuts.begin(), cuts.end());
     cuts.push_back(end);
     std::vector<detail::Interval<kMaxWeights>> heap;
     double size = 0.0;
@@ -224,12 +289,19 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
         double theta;
         bool kink;
     };
-    std::vector<Point> pts{{0.0, false}, {fr.theta_end, fr.hemisphere && fr.theta_end < kPi}};
+    std::vector<Point> pts{{0.0, false}, {fr.theta_end, (fr.hemisphere || !fr.support.empty()) && fr.theta_end < kPi}};
     auto add_point = [&](double t, bool kink) {
         if (t > 0.0 && t < fr.theta_end) pts.push_back({t, kink});
     };
     if (fr.hemisphere) add_point(fr.theta_a, true);
     if (fr.theta_star >= 0.0) add_point(fr.theta_star, true);
+    // Where the rings start or stop crossing a cone (they touch it there).
+    for (const auto* cones : {&fr.support, &fr.kink_cones})
+        for (const FrameCone& k : *cones) {
+            add_point(std::abs(k.beta - k.gamma), true);
+            add_point(k.gamma + k.beta, true);
+            add_point(2.0 * kPi - k.beta - k.gamma, true);
+        }
     add_point(fr.w, false);
     for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
     std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.theta < b.theta; });
