@@ -14,10 +14,24 @@ namespace brdflut {
 #include "families.inc"
 #undef BRDFLUT_FAMILY
 
+namespace {
+// Registers one family and names what it added: its tables' family and its
+// description (a family that gives none is listed by its name; a test
+// requires every family to describe itself).
+void register_family(FamilyEntries& f, const char* name, void (*reg)(FamilyEntries&)) {
+    const std::size_t tables = f.tables.size(), described = f.families.size();
+    reg(f);
+    for (std::size_t i = tables; i < f.tables.size(); ++i) f.tables[i].family = name;
+    if (f.families.size() == described) f.families.push_back({name, name, ""});
+    f.families.resize(described + 1);
+    f.families.back().name = name;
+}
+}  // namespace
+
 const FamilyEntries& families() {
     static const FamilyEntries all = [] {
         FamilyEntries f;
-#define BRDFLUT_FAMILY(name) register_##name##_family(f);
+#define BRDFLUT_FAMILY(name) register_family(f, #name, register_##name##_family);
 #include "families.inc"
 #undef BRDFLUT_FAMILY
         return f;
@@ -26,6 +40,8 @@ const FamilyEntries& families() {
 }
 
 const std::vector<TableDefinition>& catalogue() { return families().tables; }
+
+const std::vector<TableFamily>& table_families() { return families().families; }
 
 const TableDefinition& find_table(const std::string& id) {
     for (const TableDefinition& d : catalogue())

@@ -82,6 +82,9 @@ struct PreparedTable {
 struct TableDefinition {
     std::string id;
     std::string description;  // one line
+    // The family that declares the table (its file src/tables/FAMILY_tables.cpp);
+    // set by the catalogue.
+    std::string family;
     std::vector<AxisSpec> axes;
     std::vector<std::string> channels;  // meaning of R, G, B, A in order
     std::vector<ModelOption> options;
@@ -113,6 +116,16 @@ struct TableDefinition {
 };
 
 const std::vector<TableDefinition>& catalogue();
+
+// A family of tables, as its family file describes itself for the reference
+// docs (brdflut docs).
+struct TableFamily {
+    std::string name;     // e.g. "beckmann": TableDefinition::family of its tables
+    std::string title;    // e.g. "Beckmann microfacet"
+    std::string summary;  // one or more paragraphs of Markdown: the model, its sources, what the tables hold
+};
+// Every family, in catalogue order.
+const std::vector<TableFamily>& table_families();
 // Throws brdflut::Error listing the known ids when id is unknown.
 const TableDefinition& find_table(const std::string& id);
 

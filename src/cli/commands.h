@@ -2,15 +2,26 @@
 // errors propagate as exceptions to main().
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "brdflut/formats.h"
 #include "cli/options.h"
 
 namespace brdflut::cli {
 
-int run_list(bool presets_only);
+int run_list(bool presets_only, bool json);
+
+// The reference pages of docs/reference (file name -> Markdown), rendered
+// from the catalogue, and the catalogue as JSON (`list --json`).
+std::map<std::string, std::string> reference_pages();
+nlohmann::json catalogue_json();
+// Writes the pages to `output`, or with check compares them with the files
+// there (exit 1 naming the stale pages).
+int run_docs(const std::string& output, bool check);
 
 struct GenerateArgs {
     std::vector<std::string> ids;

@@ -50,9 +50,15 @@ private:
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
 
-int run_list(bool presets_only) {
+int run_list(bool presets_only, bool json) {
     static const char* kAxisLetters[3] = {"x", "y", "z"};
     static const char* kChannels[4] = {"R", "G", "B", "A"};
+    if (json) {
+        nlohmann::json j = catalogue_json();
+        if (presets_only) j = {{"presets", j["presets"]}};
+        std::cout << j.dump(2) << "\n";
+        return 0;
+    }
     if (presets_only) {
         for (const Preset& p : presets()) {
             std::cout << p.name << "\n  " << p.description << "\n  tables:";

@@ -84,8 +84,15 @@ int main(int argc, char** argv) {
     app.footer("Run 'brdflut <command> --help' for the options of a command.");
 
     CLI::App* lst = app.add_subcommand("list", "List every table with its axes, channels and options");
-    bool list_presets = false;
+    bool list_presets = false, list_json = false;
     lst->add_flag("--presets", list_presets, "List the engine presets only");
+    lst->add_flag("--json", list_json, "Print the catalogue (tables, families, presets) as JSON");
+
+    CLI::App* docs = app.add_subcommand("docs", "Write the reference pages (docs/reference) from the catalogue");
+    std::string docs_output = "docs/reference";
+    bool docs_check = false;
+    docs->add_option("-o,--output", docs_output, "Folder of the pages, created if missing")->capture_default_str();
+    docs->add_flag("--check", docs_check, "Write nothing; exit 1 if the pages in the folder differ from the catalogue's");
 
     CLI::App* gen = app.add_subcommand("generate", "Generate tables as OpenEXR, C++ header, 16-bit PNG, DDS or KTX2 files");
     GenerateArgs g;
@@ -157,7 +164,7 @@ int main(int argc, char** argv) {
     add_describe_options(*smp, s.describe);
     smp->add_option("--at", s.at, "Parameter point, e.g. cos_theta=0.5,alpha=0.1")->required();
 
-    const std::vector<std::string> commands{"list", "generate", "verify", "furnace", "compare", "identify", "inspect", "sample"};
+    const std::vector<std::string> commands{"list", "docs", "generate", "verify", "furnace", "compare", "identify", "inspect", "sample"};
     if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
         std::string known;
         for (const auto& name : commands) known += (known.empty() ? "" : ", ") + name;
@@ -197,7 +204,8 @@ int main(int argc, char** argv) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);
         }
-        return run_list(list_presets);
+        if (app.got_subcommand(docs)) return run_docs(docs_output, docs_check);
+        return run_list(list_presets, list_json);
     } catch (const Error& e) {
         std::cerr << "brdflut: error: " << e.what() << "\n";
         return kExitUsage;

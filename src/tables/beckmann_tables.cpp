@@ -424,6 +424,16 @@ LtcTableSpec cook_torrance_ltc(LtcLayout layout, std::string id, std::string des
 }  // namespace
 
 void register_beckmann_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Beckmann microfacet",
+        "The Beckmann distribution D = exp(-tan^2(theta_h)/alpha^2)/(pi alpha^2 cos^4(theta_h)) (alpha = "
+        "sqrt(2) times the RMS slope along one axis) with the exact Smith Lambda (erf form), "
+        "height-correlated or separable, or Schlick's G1 with k = alpha sqrt(2/pi) (`--visibility`), F = "
+        "1: split sums, albedo and average albedo, as Mitsuba 3, the MDL SDK, appleseed and HDRP's AxF "
+        "use the model. HDRP's Cook-Torrance LTC layer (Beckmann D with the V-cavity G of Cook and "
+        "Torrance 1982, alpha >= 0.002) is fitted in HDRP's grid and packing, with its per-texel error "
+        "table. Every table is built through the generic lobe path from the BRDF alone "
+        "(`src/brdflut/generic_lobe.h`): no Beckmann-specific quadrature."});
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::dfg, "beckmann_dfg",
                        "Beckmann split-sum terms: specular = F0 * A + B (F = 1 inside the integral)",

@@ -240,6 +240,16 @@ TableDefinition base(std::string id, std::string description, std::vector<AxisSp
 }  // namespace
 
 void register_dipole_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Subsurface scattering: the dipole",
+        "The dipole diffusion model of Jensen et al. 2001: the diffuse reflectance profile R_d(r), its "
+        "radial CDF for importance sampling radii, the total diffuse reflectance (a'/2)(1 + e^(-(4/3) A "
+        "sqrt(3(1 - a')))) e^(-sqrt(3(1 - a'))) and its inverse (solved by safeguarded Newton, as Jensen "
+        "and Buhler 2002), in reduced mean free paths or, for the measured materials of the paper "
+        "(`--material`, or `--sigma-a` and `--sigma-s`), in millimetres per channel. F_dr is the "
+        "Egan-Hilgeman fit of the paper (`--fdr fit`, 1 <= eta <= 3) or the exact hemispherical average "
+        "of the interface's Fresnel reflectance from inside (`--fdr exact`). The values are closed forms "
+        "evaluated in double."});
     std::vector<TableDefinition>& out = family.tables;
     // The boundary term of the default settings, which verify's checks use.
     const double A = boundary_from(default_settings(base("", "", {}, {}))).A;

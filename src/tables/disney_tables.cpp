@@ -58,6 +58,15 @@ double clearcoat_average_over_mu(double gloss) {
 }  // namespace
 
 void register_disney_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Disney BRDF lobes",
+        "The albedo E(mu, p) = integral of f cos(theta_i) dw_i and its average of the lobes of Burley "
+        "2012, per unit base colour: the diffuse lobe with F_D90 = 0.5 + 2 r cos^2(theta_d) (not energy "
+        "conserving: E(1, r) = 41/42 + 5r/84), the subsurface lobe (Hanrahan-Krueger-like, F_ss90 = r "
+        "cos^2(theta_d)), the untinted sheen (1 - cos(theta_d))^5 and the clearcoat (GTR1 with alpha = "
+        "mix(0.1, 0.001, gloss), Fresnel 0.04 + 0.96 (1 - cos(theta_d))^5, GGX G1 with alpha 0.25); a "
+        "base layered under a coat of weight c is scaled by 1 - c E_c(mu_o). The azimuth is integrated in "
+        "closed form wherever it has one."});
     std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
     AxisSpec roughness = unit_axis("roughness", "perceptual roughness r (alpha = r^2)");

@@ -236,6 +236,16 @@ const std::vector<double> kCheckEtas{1.0, 1.2, 1.33, 1.5, 2.0, 2.9};
 }  // namespace
 
 void register_fresnel_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Fresnel reflectance",
+        "The exact unpolarized reflectance F = (Rs + Rp)/2 of a smooth interface (Born and Wolf), mu = "
+        "cos(theta_i), eta = eta_t/eta_i; for eta < 1, F = 1 below the critical cosine sqrt(1 - eta^2). A "
+        "conductor has the complex index eta + i k (complex arithmetic throughout, so k = 0 gives the "
+        "dielectric F). The averages F_avg = 2 * integral of F(mu) mu dmu feed multiple-scattering "
+        "Fresnel terms (Kulla and Conty 2017); from inside a dielectric F_avg(1/n) = 1 - (1 - "
+        "F_avg(n))/n^2. `--fresnel approx` takes the real-valued conductor form of pbrt-v2 and Mitsuba "
+        "0.5, exact only at normal incidence. The metals of `--metal` are listed in [conductor "
+        "data](conductors.md)."});
     std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
     {

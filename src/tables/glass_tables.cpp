@@ -172,6 +172,16 @@ ClosedFormCheck index_matched_check(Kind kind) {
 }  // namespace
 
 void register_glass_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Rough glass",
+        "The reflection and transmission albedos E_R and E_T of the GGX rough dielectric of Walter et al. "
+        "2007 (GGX normals, exact dielectric Fresnel, 1 under total internal reflection, Smith G2 with "
+        "Lambda of |cos(theta_i)|), seen from outside (eta = n) and from inside (eta = 1/n) over the same "
+        "`ior` axis, and their averages over mu. E_T is energy (Walter's eta_o^2 included): a renderer "
+        "that carries radiance across the interface multiplies it by 1/eta^2. A direction that lands on "
+        "the wrong side of the macro surface contributes nothing. The `ior` axis uses the `ior_z` warp, "
+        "linear in Cycles' z = sqrt((n - 1)/(n + 1)). The nested integrals are hand-reduced and held to "
+        "the generic lobe path (a reflection and a transmission lobe declared from f alone) by a test."});
     using namespace tables;
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::directional, false, "ggx_glass_albedo",

@@ -475,6 +475,17 @@ LtcTableSpec spec(LtcLobeKind kind, Layout layout, std::string id, std::string p
 }  // namespace
 
 void register_ltc_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Area lights: linearly transformed cosines",
+        "Linearly transformed cosines (Heitz, Dupuy, Hill and Neubelt 2016) shade polygonal lights in "
+        "closed form: per view angle and roughness a 3x3 matrix M carries the clamped cosine to a "
+        "distribution close to the lobe f cos, and a polygon's light is the cosine's edge integral over "
+        "M^-1 P. brdflut fits M per texel (Nelder-Mead on all four parameters of a y-symmetric LTC, "
+        "Heitz's error measure, a light term near grazing view) for the GGX lobe in Heitz's layout "
+        "(`ltc_1`, `ltc_2`, as three.js, EEVEE and Godot load them) and HDRP's (`hdrp_ltc_ggx`), and in "
+        "Heitz's layout for the Charlie sheen and EON lobes, each with a table of the per-texel error "
+        "(relative L3 error, mass below the horizon, integrated-light error over a bank of lights). Any "
+        "family declares the LTC of a lobe of its own through the same path (`src/tables/ltc_tables.h`)."});
     using K = LtcLobeKind;
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(ltc_table(spec(K::ggx, Layout::heitz_matrix, "ltc_1", "ltc",

@@ -37,6 +37,13 @@ double oren_nayar_average_of_closed_form(double sigma) {
 }  // namespace
 
 void register_oren_nayar_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Rough diffuse: Oren-Nayar, Fujii and EON",
+        "The albedo and its average of three rough diffuse models at rho = 1: the qualitative Oren-Nayar "
+        "model (sigma in radians), Fujii's improved form as OpenPBR uses it (FON), and EON (Portsmouth et "
+        "al. 2025), FON plus the multiple-scattering lobe built with FON's exact albedo, so that EON is a "
+        "white furnace (1 everywhere). The azimuth is integrated in closed form; what remains is one "
+        "integral over theta_i, split at theta_o."});
     std::vector<TableDefinition>& out = family.tables;
     using namespace tables;
     const AxisSpec sigma_rad = unit_axis(

@@ -366,6 +366,15 @@ const std::vector<Preset>& presets() {
 }
 
 void register_preset_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Engine presets",
+         "The tables engines ship, each exactly in the engine's layout (grid, texel placement, axis warps, "
+         "roughness parameterization, channel order and meaning, visibility term) and computed from the core "
+         "tables' integrals, so that compare, verify and inspect work on them unchanged: Filament's DFG with "
+         "cloth, Unreal's PreIntegratedGF, HDRP's PreIntegratedFGD, Cycles' GGX and rough glass albedo tables, "
+         "glTF-IBL-Sampler's LUTs and Godot's environment BRDF. Each names the engine source it follows in "
+         "its metadata; [the engines page](../engines.md) says what each engine's shipped table holds and "
+         "how brdflut's compares with it."});
     std::vector<TableDefinition>& out = family.tables;
     const nlohmann::json hc = ggx_model(Visibility::height_correlated);
     nlohmann::json filament_model = hc;

@@ -15,6 +15,9 @@ namespace brdflut {
 struct FamilyEntries {
     std::vector<TableDefinition> tables;
     std::vector<FurnaceModel> furnace_models;
+    // Each family adds its own description (title and summary; the name is
+    // set by the catalogue).
+    std::vector<TableFamily> families;
 };
 
 // A family file src/tables/NAME_tables.cpp defines

@@ -53,6 +53,14 @@ nlohmann::json tables::charlie_sheen_model() {
 }
 
 void register_sheen_family(FamilyEntries& family) {
+    family.families.push_back(
+        {"", "Charlie sheen",
+        "The albedo of the Charlie distribution D = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi) "
+        "(Estevez and Kulla 2017) with Neubelt's visibility V = 1/(4 (mu_i + mu_o - mu_i mu_o)) (Neubelt "
+        "and Pettineo 2013), no Fresnel: Filament's cloth DFG term, alpha = perceptual_roughness^2 "
+        "(Filament, KHR_materials_sheen). V is not energy conserving: E grows without bound at grazing "
+        "view as alpha goes to 0. The azimuth integral has a closed form at fixed theta_h; what remains "
+        "is one adaptive integral, held to the generic lobe path by a test."});
     std::vector<TableDefinition>& out = family.tables;
     TableDefinition d;
     d.id = "sheen_charlie_albedo";
