@@ -1,6 +1,6 @@
-// Rewrites the benchmark figures of README.md from benchmark output.
+// Rewrites the benchmark figures of a page (docs/performance.md) from benchmark output.
 //
-//   brdflut_readme_figures README.md OUTPUT...   (OUTPUT: files, or - for stdin)
+//   brdflut_readme_figures PAGE.md OUTPUT...   (OUTPUT: files, or - for stdin)
 //
 // The outputs of brdflut_dfg_race and brdflut_table_report are read in the
 // order given; their machine-readable lines are rendered by
@@ -26,7 +26,7 @@ std::string read_all(std::istream& in) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: brdflut_readme_figures README.md OUTPUT...\n");
+        std::fprintf(stderr, "usage: brdflut_readme_figures PAGE.md OUTPUT...\n");
         return 2;
     }
     try {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Rewrites the benchmark figures in README.md's "Performance" section from a
-# fresh run of the benchmarks (never by hand):
+# Rewrites the benchmark figures of docs/performance.md from a fresh run of
+# the benchmarks (never by hand):
 #
 #   bash bench/update_readme.sh [BUILD_DIR] [ROUNDS]
 #
@@ -8,7 +8,7 @@
 # brdflut_dfg_race (ggx_dfg against the 1024-sample estimator, 1 and 2
 # threads) and brdflut_table_report --no-mc (every table and its error against
 # --quality reference), keeps their output in bench/last_run.txt, and renders
-# it into the block between the markers of README.md with
+# it into the block between the markers of docs/performance.md with
 # brdflut_readme_figures. tests/test_readme.cpp checks the block. Run it
 # from the repository root on an otherwise idle machine.
 set -euo pipefail
@@ -24,6 +24,6 @@ out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 "$build/bench/brdflut_dfg_race" --rounds "$rounds" | tee "$out"
 "$build/bench/brdflut_table_report" --no-mc | tee -a "$out"
-"$build/bench/brdflut_readme_figures" README.md "$out"
+"$build/bench/brdflut_readme_figures" docs/performance.md "$out"
 cp "$out" bench/last_run.txt
-echo "update_readme: README.md rewritten from bench/last_run.txt"
+echo "update_readme: docs/performance.md rewritten from bench/last_run.txt"

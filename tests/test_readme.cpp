@@ -1,31 +1,38 @@
-// README.md's benchmark figures are rendered from the benchmarks' output by
-// bench/update_readme.sh. Without timing anything, check that the block is
-// exactly what the renderer writes from the output it quotes (so no figure
-// was typed in or edited by hand), that it sits in the Performance section,
+// The benchmark figures of docs/performance.md are rendered from the
+// benchmarks' output by bench/update_readme.sh. Without timing anything,
+// check that the block is exactly what the renderer writes from the output
+// it quotes (so no figure was typed in or edited by hand), that it sits in
+// the Performance page,
 // that it names only tables the catalogue has, that its ratios are those of
 // its times, and that its deterministic figure (ggx_dfg's evaluations per
 // texel) is what the code does today.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/generate.h"
 #include "readme_figures.h"
+#include "test_support.h"
 
 using namespace brdflut;
 
 namespace {
 
-std::string readme() {
-    std::ifstream in(std::string(BRDFLUT_SOURCE_DIR) + "/README.md");
+std::string source_file(const std::string& path) {
+    std::ifstream in(std::string(BRDFLUT_SOURCE_DIR) + "/" + path);
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
 }
+// The page that holds the benchmark figures.
+std::string readme() { return source_file("docs/performance.md"); }
 
 const bench::Record& find(const std::vector<bench::Record>& rs, const std::string& kind, const std::string& key,
                           const std::string& value) {
@@ -41,10 +48,9 @@ TEST(ReadmeFigures, BlockIsWhatTheRendererWritesFromTheOutputItQuotes) {
     ASSERT_FALSE(text.empty());
     std::size_t begin = 0;
     const std::string block = bench::extract_block(text, &begin);
-    // Inside "## Performance", before the next section.
-    const std::size_t section = text.rfind("\n## ", begin);
-    ASSERT_NE(section, std::string::npos);
-    EXPECT_EQ(text.compare(section, 15, "\n## Performance"), 0) << "the figures are outside the Performance section";
+    // On the Performance page, before its first section.
+    EXPECT_EQ(text.compare(0, 14, "# Performance\n"), 0) << "the figures are not on the Performance page";
+    EXPECT_EQ(text.rfind("\n## ", begin), std::string::npos) << "the figures are not in the page's introduction";
     const std::vector<bench::Record> records = bench::parse_records(block);
     ASSERT_FALSE(records.empty());
     EXPECT_EQ(bench::render_block(records), block);
@@ -102,4 +108,71 @@ TEST(ReadmeFigures, GgxDfgEvaluationsPerTexelAreTheCodesOwn) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.0f", per_texel);
     EXPECT_EQ(find(records, "accuracy", "program", "ggx_dfg").at("evaluations_per_texel"), std::string(buf));
+}
+
+// Every command line of README.md's examples runs as quoted, from a folder
+// that holds the repository's tests/ (the examples read its fixtures), and
+// exits 0; and the README's picture is what the command it names writes.
+namespace {
+
+// The ./build/brdflut lines of the README's sh blocks, continuation lines
+// joined, without their trailing comments.
+std::vector<std::string> readme_commands() {
+    std::istringstream in(source_file("README.md"));
+    std::vector<std::string> out;
+    std::string line, pending;
+    bool sh = false;
+    while (std::getline(in, line)) {
+        if (line.rfind("```", 0) == 0) {
+            sh = line == "```sh";
+            continue;
+        }
+        if (!sh) continue;
+        if (!pending.empty()) {
+            pending += " " + line.substr(line.find_first_not_of(' '));
+        } else if (line.rfind("./build/brdflut ", 0) == 0) {
+            pending = line;
+        } else {
+            continue;
+        }
+        if (!pending.empty() && pending.back() == '\\') {
+            pending.pop_back();
+            continue;
+        }
+        const std::size_t hash = pending.find(" #");
+        if (hash != std::string::npos) pending.erase(hash);
+        while (!pending.empty() && pending.back() == ' ') pending.pop_back();
+        out.push_back(pending);
+        pending.clear();
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Readme, EveryExampleCommandRunsAndExitsZero) {
+    const std::vector<std::string> commands = readme_commands();
+    ASSERT_GE(commands.size(), 6u);
+    test::TempDir dir;
+    std::filesystem::create_symlink(std::string(BRDFLUT_SOURCE_DIR) + "/tests", dir / "tests");
+    const std::string prefix = "./build/brdflut ";
+    for (const std::string& c : commands) {
+        ASSERT_EQ(c.rfind(prefix, 0), 0u) << c;
+        const std::string cmd = "cd '" + dir.path().string() + "' && '" + BRDFLUT_CLI + "' " + c.substr(prefix.size()) +
+                                " > /dev/null 2> '" + (dir / "err.txt") + "'";
+        const int status = std::system(cmd.c_str());
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << c << "\n" << test::read_file(dir / "err.txt");
+    }
+}
+
+TEST(Readme, PictureIsWhatItsCommandWrites) {
+    const std::string readme_text = source_file("README.md");
+    const std::string command = "./build/brdflut furnace ggx --plot docs/images";
+    ASSERT_NE(readme_text.find(command), std::string::npos) << "the README no longer names the picture's command";
+    test::TempDir dir;
+    const test::CliResult r = test::run_cli("furnace ggx --plot '" + (dir / "images") + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(test::read_file(dir / "images/furnace_ggx.png"),
+              source_file("docs/images/furnace_ggx.png"))
+        << "regenerate the picture: " << command;
 }

@@ -58,7 +58,7 @@ std::string_view to_string(Warp w);
 Warp warp_from_string(std::string_view s);  // throws brdflut::Error listing the warps
 
 struct Axis {
-    std::string name;  // from the vocabulary in README.md: cos_theta, alpha, ...
+    std::string name;  // from the vocabulary in docs/axes.md: cos_theta, alpha, ...
     double min = 0.0;  // parameter at u = 0
     double max = 1.0;  // parameter at u = 1 (below min for a decreasing axis)
     int count = 1;
