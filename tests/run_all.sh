@@ -12,26 +12,37 @@ jobs=${BRDFLUT_JOBS:-2}
 log=$(mktemp -d)
 trap 'rm -rf "$log"' EXIT
 
+lap() {  # seconds since the previous lap (wall clock), for the stage lines
+    echo "   ($1: $((SECONDS - last)) s)"
+    last=$SECONDS
+}
+last=$SECONDS
+
 count() {  # "N tests passed" summary of a ctest log -> "passed failed"
     sed -n 's/.*tests passed, \([0-9]*\) tests failed out of \([0-9]*\).*/\1 \2/p' "$1" | tail -n 1
 }
 
 echo "== Release build: ctest"
 ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release.txt"
+lap "Release ctest"
 
 echo "== AddressSanitizer + UndefinedBehaviorSanitizer: build and ctest"
 cmake --preset sanitize > "$log/sanitize-configure.txt"
 cmake --build --preset sanitize -j"$jobs" > "$log/sanitize-build.txt" || { tail -n 50 "$log/sanitize-build.txt"; exit 1; }
+lap "sanitizer configure and build"
 ctest --preset sanitize -j"$jobs" | tee "$log/sanitize.txt"
+lap "sanitizer ctest"
 
 echo "== libFuzzer on the table readers"
 cmake --preset fuzz > "$log/fuzz-configure.txt"
 cmake --build --preset fuzz -j"$jobs" > "$log/fuzz-build.txt" || { tail -n 50 "$log/fuzz-build.txt"; exit 1; }
+lap "fuzzer configure and build"
 mkdir -p "$log/corpus"
 ./build-fuzz/fuzz_read_table -max_total_time="${BRDFLUT_FUZZ_SECONDS:-60}" -seed=1 -timeout=10 \
     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 "$log/corpus" tests/fuzz/corpus 2> "$log/fuzz.txt" ||
     { tail -n 60 "$log/fuzz.txt"; exit 1; }
 grep -E "^(Done|stat::number_of_executed_units)" "$log/fuzz.txt" || true
+lap "fuzzing"
 
 read -r rf rt <<< "$(count "$log/release.txt")"
 read -r sf st <<< "$(count "$log/sanitize.txt")"
