@@ -20,6 +20,8 @@ const FamilyEntries& families() {
 #define BRDFLUT_FAMILY(name) register_##name##_family(f);
 #include "families.inc"
 #undef BRDFLUT_FAMILY
+        const auto complete = f.complete;
+        for (const auto& step : complete) step(f);
         return f;
     }();
     return all;

@@ -1,6 +1,7 @@
 // Each family of tables adds its definitions to the catalogue here.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "brdflut/catalogue.h"
@@ -15,6 +16,9 @@ namespace brdflut {
 struct FamilyEntries {
     std::vector<TableDefinition> tables;
     std::vector<FurnaceModel> furnace_models;
+    // Run once every family has added its entries, in the order added: for
+    // entries resolved against other families' tables (recipe.h).
+    std::vector<std::function<void(FamilyEntries&)>> complete;
 };
 
 // A family file src/tables/NAME_tables.cpp defines
