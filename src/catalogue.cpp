@@ -34,6 +34,8 @@ const FamilyEntries& families() {
 #define BRDFLUT_FAMILY(name) register_family(f, #name, register_##name##_family);
 #include "families.inc"
 #undef BRDFLUT_FAMILY
+        const auto complete = f.complete;
+        for (const auto& step : complete) step(f);
         return f;
     }();
     return all;

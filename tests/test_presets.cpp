@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
@@ -14,6 +15,7 @@
 #include "brdflut/lobe_integrals.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/sheen_integrals.h"
+#include "tables/recipe.h"
 #include "test_support.h"
 
 using namespace brdflut;
@@ -185,4 +187,158 @@ TEST(Presets, AllGeneratesTheDefaultSetOnlyAndListTagsPresets) {
     EXPECT_NE(list.out.find("filament_dfg [preset: filament]"), std::string::npos);
     const auto names = run_cli("list --presets", dir);
     for (const Preset& p : presets()) EXPECT_NE(names.out.find(p.name + "\n"), std::string::npos) << p.name;
+}
+
+namespace {
+// The coordinate a recipe table's texel gives a core table's axis `name`: the
+// axis of that name, or the square (root) of the axis whose square_name
+// (root_name) it is.
+double core_coordinate(const tables::RecipeTable& t, const std::string& name, const std::vector<double>& c) {
+    for (std::size_t i = 0; i < t.axes.size(); ++i)
+        if (t.axes[i].axis.name == name) return c[i];
+    for (std::size_t i = 0; i < t.axes.size(); ++i) {
+        if (t.axes[i].square_name == name) return c[i] * c[i];
+        if (t.axes[i].root_name == name) return std::sqrt(c[i]);
+    }
+    ADD_FAILURE() << t.id << ": nothing feeds " << name;
+    return std::nan("");
+}
+
+TableSettings with(const TableDefinition& def, const std::map<std::string, std::string>& options, Method method) {
+    TableSettings s = default_settings(def);
+    for (const auto& [name, value] : options)
+        if (s.params.count(name)) s.params[name] = value;
+    s.method = method;
+    s.samples = 64;
+    s.seed = 7;
+    return s;
+}
+}  // namespace
+
+TEST(Presets, EveryRecipeNamesCoreTablesTheirChannelsAndOptions) {
+    const auto& declared = tables::preset_declarations();
+    ASSERT_EQ(declared.size(), presets().size());
+    for (std::size_t i = 0; i < declared.size(); ++i) {
+        const tables::PresetDeclaration& p = declared[i];
+        EXPECT_EQ(presets()[i].name, p.preset.name);
+        if (p.tables.empty()) {
+            // Presets of fitted tables (ltc_tables.cpp) name this declaration.
+            EXPECT_FALSE(preset_tables(p.preset.name).empty()) << p.preset.name;
+            continue;
+        }
+        EXPECT_EQ(preset_tables(p.preset.name).size(), p.tables.size()) << p.preset.name;
+        for (const tables::RecipeTable& t : p.tables) {
+            const TableDefinition& def = find_table(t.id);
+            EXPECT_EQ(def.preset, p.preset.name);
+            ASSERT_EQ(def.channels.size(), t.channels.size()) << t.id;
+            bool mc = true, identify = true;
+            for (const tables::ChannelRecipe& c : t.channels)
+                for (const tables::RecipeTerm& term : c.terms) {
+                    const TableDefinition& core = find_table(term.table);
+                    EXPECT_TRUE(core.preset.empty()) << t.id << " reads " << term.table;
+                    EXPECT_GE(term.channel, 0) << t.id;
+                    EXPECT_LT(term.channel, static_cast<int>(core.channels.size())) << t.id << " " << term.table;
+                    mc = mc && core.supports_monte_carlo;
+                    identify = identify && core.searched_by_identify;
+                    for (const AxisSpec& a : core.axes)
+                        EXPECT_TRUE(std::isfinite(core_coordinate(t, a.axis.name, std::vector<double>(3, 0.25))))
+                            << t.id << " " << term.table;
+                }
+            EXPECT_EQ(def.supports_monte_carlo, mc) << t.id;
+            EXPECT_EQ(def.searched_by_identify, identify) << t.id;
+            for (const auto& [name, value] : t.options) {
+                bool taken = false;
+                for (const tables::ChannelRecipe& c : t.channels)
+                    for (const tables::RecipeTerm& term : c.terms)
+                        for (const ModelOption& o : find_table(term.table).options) taken = taken || o.name == name;
+                EXPECT_TRUE(taken) << t.id << " option " << name;
+            }
+        }
+    }
+}
+
+TEST(Presets, RecipeMistakesAreRefusedWithTheBadValueAndWhatIsAllowed) {
+    auto lookup = [](const std::string& id) -> const TableDefinition* {
+        for (const TableDefinition& d : catalogue())
+            if (d.id == id) return &d;
+        return nullptr;
+    };
+    tables::RecipeTable t = tables::preset_declarations().front().tables.front();
+    auto message = [&](const tables::RecipeTable& r) {
+        try {
+            tables::plan_recipe(r, lookup);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message(t), "no error");
+    tables::RecipeTable bad = t;
+    bad.channels[0].terms[0].table = "ggx_nope";
+    EXPECT_NE(message(bad).find("'ggx_nope' is not in the catalogue"), std::string::npos) << message(bad);
+    bad = t;
+    bad.channels[0].terms[0].channel = 5;
+    EXPECT_NE(message(bad).find("channel 5 of core table 'ggx_dfg' does not exist; allowed 0 to 1"),
+              std::string::npos)
+        << message(bad);
+    bad = t;
+    bad.channels[0].terms[0].table = "unreal_dfg";
+    EXPECT_NE(message(bad).find("belongs to preset 'unreal'"), std::string::npos) << message(bad);
+    bad = t;
+    bad.axes[1].square_name = "";
+    EXPECT_NE(message(bad).find("no axis feeds axis 'alpha' of core table 'ggx_dfg'"), std::string::npos)
+        << message(bad);
+    bad = t;
+    bad.options = {{"visibility", "beckmann"}};
+    EXPECT_NE(message(bad).find("visibility = 'beckmann' is not allowed by core table 'ggx_dfg'; allowed:"),
+              std::string::npos)
+        << message(bad);
+    bad.options = {{"fresnel", "exact"}};
+    EXPECT_NE(message(bad).find("option 'fresnel' is taken by none of its core tables"), std::string::npos)
+        << message(bad);
+}
+
+// Each preset table's value is its recipe over its core tables' values, within
+// both error estimates, at the first, middle and last texel of every axis,
+// by quadrature and by Monte Carlo (the same seed and texel index).
+TEST(Presets, EveryPresetTableAgreesWithItsCoreTables) {
+    for (const tables::PresetDeclaration& p : tables::preset_declarations())
+        for (const tables::RecipeTable& t : p.tables)
+            for (Method method : {Method::quadrature, Method::monte_carlo}) {
+                const TableDefinition& def = find_table(t.id);
+                const PreparedTable preset = def.prepare(with(def, {}, method));
+                std::map<std::string, PreparedTable> cores;
+                for (const tables::ChannelRecipe& c : t.channels)
+                    for (const tables::RecipeTerm& term : c.terms)
+                        if (!cores.count(term.table)) {
+                            const TableDefinition& core = find_table(term.table);
+                            cores.emplace(term.table, core.prepare(with(core, t.options, method)));
+                        }
+                for (int where = 0; where < 3; ++where) {
+                    std::vector<double> c;
+                    std::uint64_t texel = 0, stride = 1;
+                    for (const AxisSpec& a : t.axes) {
+                        const int i = where == 0 ? 0 : where == 1 ? a.axis.count / 2 : a.axis.count - 1;
+                        c.push_back(a.axis.value(i));
+                        texel += static_cast<std::uint64_t>(i) * stride;
+                        stride *= static_cast<std::uint64_t>(a.axis.count);
+                    }
+                    const TexelValue v = preset.evaluator->evaluate(c.data(), texel);
+                    for (std::size_t ch = 0; ch < t.channels.size(); ++ch) {
+                        double expected = t.channels[ch].offset, error = 0.0;
+                        for (const tables::RecipeTerm& term : t.channels[ch].terms) {
+                            const TableDefinition& core = find_table(term.table);
+                            std::vector<double> x;
+                            for (const AxisSpec& a : core.axes) x.push_back(core_coordinate(t, a.axis.name, c));
+                            const TexelValue cv = cores.at(term.table).evaluator->evaluate(x.data(), texel);
+                            const auto k = static_cast<std::size_t>(term.channel);
+                            expected += term.coef * cv.value[k];
+                            error += std::abs(term.coef) * cv.error[k];
+                        }
+                        EXPECT_NEAR(v.value[ch], expected, v.error[ch] + error + 1e-15)
+                            << t.id << " channel " << ch << " texel " << texel << " " << to_string(method);
+                        EXPECT_TRUE(std::isfinite(v.value[ch])) << t.id;
+                    }
+                }
+            }
 }

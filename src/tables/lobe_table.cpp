@@ -55,6 +55,7 @@ public:
         TexelValue out;
         out.value[0] = e.value[0];
         out.error[0] = mc ? kMcErrorSigmas * e.error[0] : e.error[0];
+        out.evaluations = e.evaluations;
         return out;
     }
 

@@ -1,6 +1,7 @@
 // Each family of tables adds its definitions to the catalogue here.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "brdflut/catalogue.h"
@@ -18,6 +19,9 @@ struct FamilyEntries {
     // Each family adds its own description (title and summary; the name is
     // set by the catalogue).
     std::vector<TableFamily> families;
+    // Run once every family has added its entries, in the order added: for
+    // entries resolved against other families' tables (recipe.h).
+    std::vector<std::function<void(FamilyEntries&)>> complete;
 };
 
 // A family file src/tables/NAME_tables.cpp defines

@@ -33,6 +33,7 @@ public:
                                  : sheen_charlie_albedo(c[0], c[1], abs_tol_);
         out.value[0] = e.value[0];
         out.error[0] = (mc ? tables::kMcErrorSigmas : 1.0) * e.error[0];
+        out.evaluations = e.evaluations;
         return out;
     }
 

@@ -1,0 +1,232 @@
+#include "tables/recipe.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "brdflut/error.h"
+#include "brdflut/microfacet.h"
+
+namespace brdflut::tables {
+namespace {
+
+std::string list(const std::vector<std::string>& v) {
+    std::string out;
+    for (const std::string& s : v) out += (out.empty() ? "" : ", ") + s;
+    return out;
+}
+
+// The recipe axis that feeds the core axis `name`: one of that name first,
+// else one whose square or square root it is.
+RecipePlan::Feed feed_of(const RecipeTable& e, const TableDefinition& core, const std::string& name) {
+    for (std::size_t i = 0; i < e.axes.size(); ++i)
+        if (e.axes[i].axis.name == name) return {static_cast<int>(i), AxisConversion::same};
+    for (std::size_t i = 0; i < e.axes.size(); ++i) {
+        if (e.axes[i].square_name == name) return {static_cast<int>(i), AxisConversion::square};
+        if (e.axes[i].root_name == name) return {static_cast<int>(i), AxisConversion::root};
+    }
+    std::vector<std::string> names;
+    for (const AxisSpec& a : e.axes) names.push_back(a.axis.name);
+    throw Error("recipe table '" + e.id + "': no axis feeds axis '" + name + "' of core table '" + core.id +
+                "'; its axes (" + list(names) +
+                ") feed a core axis of their own name, of their square_name or of their root_name");
+}
+
+double convert(AxisConversion c, double v) {
+    switch (c) {
+        case AxisConversion::same: return v;
+        case AxisConversion::square: return alpha_from_perceptual(v);
+        case AxisConversion::root: return std::sqrt(v);
+    }
+    return v;
+}
+
+class RecipeEvaluator final : public TexelEvaluator {
+public:
+    struct Core {
+        std::unique_ptr<TexelEvaluator> evaluator;
+        std::vector<RecipePlan::Feed> feeds;
+    };
+
+    RecipeEvaluator(std::vector<Core> cores, std::vector<RecipePlan::Channel> channels)
+        : cores_(std::move(cores)), channels_(std::move(channels)) {}
+
+    // Each core table at the texel's coordinates converted to its axes, with
+    // the recipe's texel index (its Monte Carlo seed); then per channel the
+    // terms in order, the offset last, so that a single term with coef 1
+    // and no offset stores the core value to the bit.
+    TexelValue evaluate(const double* c, std::uint64_t texel) const override {
+        std::array<TexelValue, kMaxRecipeCores> in;
+        TexelValue out;
+        for (std::size_t i = 0; i < cores_.size(); ++i) {
+            double x[3] = {0.0, 0.0, 0.0};
+            const std::vector<RecipePlan::Feed>& feeds = cores_[i].feeds;
+            for (std::size_t k = 0; k < feeds.size(); ++k)
+                x[k] = convert(feeds[k].conversion, c[feeds[k].axis]);
+            in[i] = cores_[i].evaluator->evaluate(x, texel);
+            out.evaluations += in[i].evaluations;
+        }
+        for (std::size_t ch = 0; ch < channels_.size(); ++ch) {
+            const RecipePlan::Channel& r = channels_[ch];
+            double value = r.offset, error = 0.0;
+            for (std::size_t t = 0; t < r.terms.size(); ++t) {
+                const RecipePlan::Term& term = r.terms[t];
+                const auto k = static_cast<std::size_t>(term.channel);
+                const TexelValue& v = in[static_cast<std::size_t>(term.core)];
+                const double x = term.coef * v.value[k], e = std::abs(term.coef) * v.error[k];
+                value = t == 0 ? x : value + x;
+                error = t == 0 ? e : error + e;
+            }
+            if (!r.terms.empty() && r.offset != 0.0) value += r.offset;
+            out.value[ch] = value;
+            out.error[ch] = error;
+        }
+        return out;
+    }
+
+private:
+    std::vector<Core> cores_;
+    std::vector<RecipePlan::Channel> channels_;
+};
+
+const TableDefinition* catalogue_table(const std::string& id) {
+    for (const TableDefinition& d : catalogue())
+        if (d.id == id) return &d;
+    return nullptr;
+}
+
+}  // namespace
+
+RecipePlan plan_recipe(const RecipeTable& e, const std::function<const TableDefinition*(const std::string&)>& lookup) {
+    const std::string what = "recipe table '" + e.id + "'";
+    if (e.channels.empty() || e.channels.size() > 4)
+        throw Error(what + " has " + std::to_string(e.channels.size()) + " channels; allowed 1 to 4");
+    RecipePlan plan;
+    auto core_index = [&](const std::string& id) {
+        for (std::size_t i = 0; i < plan.cores.size(); ++i)
+            if (plan.cores[i].def->id == id) return static_cast<int>(i);
+        const TableDefinition* def = lookup(id);
+        if (!def) throw Error(what + ": core table '" + id + "' is not in the catalogue");
+        if (!def->preset.empty())
+            throw Error(what + ": table '" + id + "' belongs to preset '" + def->preset +
+                        "'; a recipe reads core tables (no preset) only");
+        if (def->axes.size() > 3)
+            throw Error(what + ": core table '" + id + "' has " + std::to_string(def->axes.size()) +
+                        " axes; allowed 1 to 3");
+        if (plan.cores.size() == static_cast<std::size_t>(kMaxRecipeCores))
+            throw Error(what + " reads more than " + std::to_string(kMaxRecipeCores) + " core tables ('" + id +
+                        "' would be one more)");
+        RecipePlan::Core core{def, {}};
+        for (const AxisSpec& a : def->axes) core.feeds.push_back(feed_of(e, *def, a.axis.name));
+        plan.cores.push_back(core);
+        return static_cast<int>(plan.cores.size() - 1);
+    };
+    for (std::size_t ch = 0; ch < e.channels.size(); ++ch) {
+        const ChannelRecipe& r = e.channels[ch];
+        if (!std::isfinite(r.offset))
+            throw Error(what + " channel " + std::to_string(ch) + ": offset " + std::to_string(r.offset) +
+                        " is not finite");
+        RecipePlan::Channel out{{}, r.offset};
+        for (const RecipeTerm& t : r.terms) {
+            const int core = core_index(t.table);
+            const int count = static_cast<int>(plan.cores[static_cast<std::size_t>(core)].def->channels.size());
+            if (t.channel < 0 || t.channel >= count)
+                throw Error(what + " channel " + std::to_string(ch) + ": channel " + std::to_string(t.channel) +
+                            " of core table '" + t.table + "' does not exist; allowed 0 to " +
+                            std::to_string(count - 1));
+            if (!std::isfinite(t.coef))
+                throw Error(what + " channel " + std::to_string(ch) + ": coefficient " + std::to_string(t.coef) +
+                            " of '" + t.table + "' is not finite");
+            out.terms.push_back({core, t.channel, t.coef});
+        }
+        plan.channels.push_back(out);
+    }
+    for (const auto& [name, value] : e.options) {
+        std::vector<std::string> known;
+        bool taken = false;
+        for (const RecipePlan::Core& core : plan.cores)
+            for (const ModelOption& o : core.def->options) {
+                known.push_back(core.def->id + " --" + o.name);
+                if (o.name != name) continue;
+                taken = true;
+                if (!o.allowed.empty() && std::find(o.allowed.begin(), o.allowed.end(), value) == o.allowed.end())
+                    throw Error(what + ": option " + name + " = '" + value + "' is not allowed by core table '" +
+                                core.def->id + "'; allowed: " + list(o.allowed));
+            }
+        if (!taken)
+            throw Error(what + ": option '" + name + "' is taken by none of its core tables; their options: " +
+                        (known.empty() ? std::string("none") : list(known)));
+    }
+    return plan;
+}
+
+TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset, const RecipeMethod& method) {
+    TableDefinition d;
+    d.id = entry.id;
+    d.description = entry.description;
+    d.axes = entry.axes;
+    for (const ChannelRecipe& c : entry.channels) d.channels.push_back(c.meaning);
+    d.preset = preset;
+    d.checks = entry.checks;
+    // Until resolve_recipe_tables has read the core tables.
+    d.supports_monte_carlo = true;
+    nlohmann::json model = entry.model;
+    model["preset"] = preset;
+    model["engine_source"] = entry.engine_source;
+    RecipeTable e = entry;
+    e.checks.clear();
+    d.prepare = [e, model, method](const TableSettings& s) {
+        const RecipePlan plan = plan_recipe(e, catalogue_table);
+        std::vector<RecipeEvaluator::Core> cores;
+        double tolerance = 0.0;
+        for (const RecipePlan::Core& core : plan.cores) {
+            TableSettings cs = default_settings(*core.def);
+            cs.method = s.method;
+            cs.quality = s.quality;
+            cs.samples = s.samples;
+            cs.seed = s.seed;
+            for (const auto* params : {&s.params, &e.options})
+                for (const auto& [name, value] : *params)
+                    if (cs.params.count(name)) cs.params[name] = value;
+            validate_settings(*core.def, cs);
+            PreparedTable p = core.def->prepare(cs);
+            if (p.finish)
+                throw Error("recipe table '" + e.id + "': core table '" + core.def->id +
+                            "' gathers table-wide figures after its texels, so it cannot feed a recipe");
+            if (p.method.contains("abs_tolerance"))
+                tolerance = std::max(tolerance, p.method["abs_tolerance"].get<double>());
+            cores.push_back({std::move(p.evaluator), core.feeds});
+        }
+        PreparedTable out;
+        out.evaluator = std::make_unique<RecipeEvaluator>(std::move(cores), plan.channels);
+        out.model = model;
+        out.method = s.method == Method::monte_carlo ? monte_carlo_method(method.mc_sampler, s)
+                                                     : quadrature_method(method.quadrature_rule, tolerance);
+        return out;
+    };
+    return d;
+}
+
+void resolve_recipe_tables(const std::vector<RecipeTable>& entries, FamilyEntries& family) {
+    auto lookup = [&family](const std::string& id) -> const TableDefinition* {
+        for (const TableDefinition& d : family.tables)
+            if (d.id == id) return &d;
+        return nullptr;
+    };
+    for (const RecipeTable& e : entries) {
+        const RecipePlan plan = plan_recipe(e, lookup);
+        bool mc = true, identify = true;
+        for (const RecipePlan::Core& core : plan.cores) {
+            mc = mc && core.def->supports_monte_carlo;
+            identify = identify && core.def->searched_by_identify;
+        }
+        for (TableDefinition& d : family.tables)
+            if (d.id == e.id) {
+                d.supports_monte_carlo = mc;
+                d.searched_by_identify = identify;
+            }
+    }
+}
+
+}  // namespace brdflut::tables
