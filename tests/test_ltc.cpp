@@ -251,28 +251,6 @@ TEST(LtcTables, Ltc2HoldsTheFitsNormsWithoutFitting) {
                  }()).method.contains("fit_error"));
 }
 
-TEST(LtcFit, CoefficientsAreSmoothAlongARowAndAColumn) {
-    // Second differences of the stored coefficients between neighbouring
-    // texels of the 64x64 table, along roughness (at a grazing row) and
-    // along the view angle (at a middle column): a texel fallen into another
-    // minimum shows as a spike. (Every texel: over every other texel the
-    // differences are those of twice the spacing, not the table's.) The
-    // largest is 0.018, into the last row (cos 1.57); elsewhere they stay
-    // below 0.01.
-    auto check = [](const std::vector<LtcInverse>& v, const std::string& what) {
-        for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-            const double d[4] = {v[i - 1].a - 2 * v[i].a + v[i + 1].a, v[i - 1].b - 2 * v[i].b + v[i + 1].b,
-                                 v[i - 1].c - 2 * v[i].c + v[i + 1].c, v[i - 1].d - 2 * v[i].d + v[i + 1].d};
-            for (double x : d) EXPECT_LT(std::abs(x), 0.02) << what << " at " << i;
-        }
-    };
-    std::vector<LtcInverse> row, col;
-    for (int a = 0; a < 64; ++a) row.push_back(fit_ggx_ltc(mu_of(56), alpha_of(a), Visibility::height_correlated).minv);
-    for (int t = 0; t < 64; ++t) col.push_back(fit_ggx_ltc(mu_of(t), alpha_of(32), Visibility::height_correlated).minv);
-    check(row, "row t=56");
-    check(col, "column a=32");
-}
-
 // The three.js copy of Heitz's ltc_1 / ltc_2 (tests/fixtures/ltc).
 std::vector<double> read_fixture(const std::string& name) {
     std::ifstream in(std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/ltc/" + name);

@@ -1,5 +1,7 @@
-// LTC fits of the Charlie sheen and EON rough diffuse lobes: the norm
-// against the catalogue's albedo tables, local optimality, smoothness, the
+// LTC fits of the Charlie sheen and EON rough diffuse lobes (and, for the
+// minima of neighbouring texels, of every lobe the catalogue fits): the norm
+// against the catalogue's albedo tables, local optimality, no texel in a
+// worse minimum than its neighbours' fits continued to it, the
 // symmetric fit at normal view, the identity for a Lambertian lobe, and
 // verify's checks of their tables (their thread independence: test_ltc.cpp).
 #include <gtest/gtest.h>
@@ -104,40 +106,43 @@ TEST(LtcLobes, FitAtNormalViewIsRotationallySymmetric) {
         }
 }
 
-TEST(LtcLobes, CoefficientsAreSmoothAlongARowAndAColumn) {
-    // Second differences of the stored coefficients relative to max(1,
-    // |coefficient|): along a grazing row and a middle column, at every
-    // other texel, except the sheen's rows: every texel from r = 8/63 (its
-    // coefficients curve fast at small roughness), where a coarser quadrature
-    // made its fits zigzag (0.15 in the middle row). Below r = 0.1 the
-    // sheen's alpha is held at 0.01, a kink of the table.
-    auto worst = [](const std::vector<LtcInverse>& v) {
-        double w = 0.0;
-        for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-            const double x[4] = {v[i].a, v[i].b, v[i].c, v[i].d};
-            const double d[4] = {v[i - 1].a - 2 * v[i].a + v[i + 1].a, v[i - 1].b - 2 * v[i].b + v[i + 1].b,
-                                 v[i - 1].c - 2 * v[i].c + v[i + 1].c, v[i - 1].d - 2 * v[i].d + v[i + 1].d};
-            for (int k = 0; k < 4; ++k) w = std::max(w, std::abs(d[k]) / std::max(1.0, std::abs(x[k])));
+// No texel of an LTC matrix table sits in a worse minimum than its
+// neighbours' fits continued to it. Along a grazing row and a middle column
+// of each lobe's table (every other texel), the texel's fit has an objective
+// no larger than the descent started from either neighbour's fit, up to the
+// objective of the line's median fit: a texel may stop short of the
+// continued minimum by less than a typical fit's own misfit (Nelder-Mead
+// stops short by up to 1e-6 here, where the medians are 4e-4 to 3e-2), not
+// by a basin. A texel that finds a better basin than its neighbours (a jump
+// between minima of near-equal depth, which shows as a step in the
+// coefficients) passes, as it should: the table holds the best fit found,
+// texel by texel.
+TEST(LtcLobes, NoTexelSitsInAWorseMinimumThanItsNeighboursContinued) {
+    for (const char* id : {"ltc_1", "ltc_sheen_charlie", "ltc_eon", "hdrp_ltc_cook_torrance"}) {
+        const TableDefinition& def = find_table(id);
+        for (const bool row : {true, false}) {
+            SCOPED_TRACE(std::string(id) + (row ? " row t = 56" : " column a = 32"));
+            std::vector<LtcLobe> lobes;
+            std::vector<LtcFit> fits;
+            std::vector<double> objectives;
+            for (int i = 0; i < 64; i += 2) {
+                lobes.push_back(ltc_table_lobe(def, r_of(row ? i : 32), mu_of(row ? 56 : i)));
+                fits.push_back(fit_ltc(lobes.back()));
+                objectives.push_back(fits.back().objective);
+            }
+            std::vector<double> sorted = objectives;
+            std::sort(sorted.begin(), sorted.end());
+            const double allowance = sorted[sorted.size() / 2];
+            for (std::size_t k = 0; k < fits.size(); ++k)
+                for (const std::size_t n : {k - 1, k + 1}) {
+                    if (n >= fits.size()) continue;  // (k - 1 wraps at k = 0)
+                    const LtcFit continued = fit_ltc_from(lobes[k], &fits[n].params);
+                    EXPECT_LE(fits[k].objective, continued.objective + allowance)
+                        << "texel " << 2 * k << " against the fit continued from texel " << 2 * n
+                        << " (the line's median objective " << allowance << ")";
+                }
         }
-        return w;
-    };
-    auto row = [](const char* id, int t, int a0, int step) {
-        const TableDefinition& def = find_table(id);
-        std::vector<LtcInverse> v;
-        for (int a = a0; a < 64; a += step) v.push_back(fit_ltc(ltc_table_lobe(def, r_of(a), mu_of(t))).minv);
-        return v;
-    };
-    auto col = [](const char* id, int a) {
-        const TableDefinition& def = find_table(id);
-        std::vector<LtcInverse> v;
-        for (int t = 0; t < 64; t += 2) v.push_back(fit_ltc(ltc_table_lobe(def, r_of(a), mu_of(t))).minv);
-        return v;
-    };
-    EXPECT_LT(worst(row("ltc_eon", 56, 0, 2)), 0.03);
-    EXPECT_LT(worst(col("ltc_eon", 32)), 0.03);
-    EXPECT_LT(worst(row("ltc_sheen_charlie", 56, 8, 1)), 0.06);
-    EXPECT_LT(worst(col("ltc_sheen_charlie", 32)), 0.1);
-    EXPECT_LT(worst(row("ltc_sheen_charlie", 32, 8, 1)), 0.06);
+    }
 }
 
 TEST(LtcLobes, MatrixTableMetadataHoldsTheMaximaOfTheErrorReport) {

@@ -119,6 +119,11 @@ struct LtcFit {
 
 // Fits the LTC of a lobe. Deterministic: depends on nothing but its arguments.
 LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt = {});
+// The same descent from given optimizer parameters (LtcFit::params) instead
+// of the initial guess from the lobe's shape (nullptr: as fit_ltc), e.g.
+// from a neighbouring texel's fit: the tests hold every fitted texel to the
+// continuation of its neighbours' minima.
+LtcFit fit_ltc_from(const LtcLobe& lobe, const std::array<double, 4>* start, const LtcFitOptions& opt = {});
 // Fits the LTC of the GGX lobe at (mu_o, alpha) (alpha below kLtcMinAlpha
 // is raised to it): fit_ltc(LtcLobe(mu_o, alpha, vis)).
 LtcFit fit_ggx_ltc(double mu_o, double alpha, Visibility vis, const LtcFitOptions& opt = {});

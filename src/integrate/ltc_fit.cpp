@@ -514,7 +514,9 @@ LtcFit fit_ggx_ltc(double mu, double alpha, Visibility vis, const LtcFitOptions&
     return fit_ltc(LtcLobe(mu, alpha, vis), opt);
 }
 
-LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
+LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) { return fit_ltc_from(lobe, nullptr, opt); }
+
+LtcFit fit_ltc_from(const LtcLobe& lobe, const std::array<double, 4>* start, const LtcFitOptions& opt) {
     LtcFit out;
     const LtcNorms norms = ltc_norms(lobe);
     out.n0 = norms.n0;
@@ -529,7 +531,7 @@ LtcFit fit_ltc(const LtcLobe& lobe, const LtcFitOptions& opt) {
         return descend_from(f, x0, step0, fx, evals);
     };
     double fx = 0.0;
-    std::array<double, 4> x = descend(s.x0, s.step, fx);
+    std::array<double, 4> x = descend(start ? *start : s.x0, s.step, fx);
     // A lobe too wide for its half-maximum widths to place the cosine (rough
     // lobes at grazing view, nearly uniform over the hemisphere) can send
     // the simplex to a cosine turned below the horizon: then start again
