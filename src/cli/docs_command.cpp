@@ -17,7 +17,7 @@
 #include "brdflut/error.h"
 #include "brdflut/furnace.h"
 #include "cli/commands.h"
-#include "io/atomic_file.h"
+#include "io/binary.h"
 
 namespace brdflut::cli {
 namespace {
@@ -315,15 +315,7 @@ int run_docs(const std::string& output, bool check) {
         return kExitFailure;
     }
     fs::create_directories(output);
-    for (const auto& [name, text] : pages) {
-        AtomicFile file((fs::path(output) / name).string());
-        {
-            std::ofstream out(file.temp_path(), std::ios::binary);
-            out << text;
-            if (!out.flush()) throw RuntimeError("cannot write " + (fs::path(output) / name).string());
-        }
-        file.commit();
-    }
+    for (const auto& [name, text] : pages) write_file_atomically((fs::path(output) / name).string(), text);
     std::cout << "wrote " << pages.size() << " pages to " << output << "\n";
     return 0;
 }
