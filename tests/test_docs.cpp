@@ -63,3 +63,16 @@ TEST(Docs, ListJsonHoldsEveryTableAndPreset) {
     }
     EXPECT_EQ(j.at("presets").size(), presets().size());
 }
+
+TEST(Docs, ListPresetsJsonHoldsOnlyThePresets) {
+    test::TempDir dir;
+    const test::CliResult r = test::run_cli("list --presets --json", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(j.contains("tables"));
+    ASSERT_EQ(j.at("presets").size(), presets().size());
+    for (std::size_t i = 0; i < presets().size(); ++i) {
+        EXPECT_EQ(j.at("presets")[i].at("name"), presets()[i].name);
+        EXPECT_EQ(j.at("presets")[i].at("tables").size(), preset_tables(presets()[i].name).size());
+    }
+}

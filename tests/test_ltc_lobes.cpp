@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "brdflut/catalogue.h"
+#include "brdflut/error.h"
 #include "brdflut/generate.h"
 #include "brdflut/ltc.h"
 #include "brdflut/ltc_fit.h"
@@ -185,5 +186,23 @@ TEST(LtcLobes, VerifyChecksOfTheNewTablesPass) {
     }
 }
 
+}  // namespace
+}  // namespace brdflut
+
+namespace brdflut {
+namespace {
+TEST(LtcLobes, ALobeOfATableThatIsNotAnLtcTableIsRefusedWithTheLtcTablesNamed) {
+    try {
+        ltc_table_lobe(find_table("ggx_dfg"), 0.5, 0.5);
+        FAIL() << "ggx_dfg accepted as an LTC table";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("'ggx_dfg' is not an LTC table"), std::string::npos) << what;
+        EXPECT_NE(what.find("hdrp_ltc_cook_torrance"), std::string::npos) << what;
+    }
+    // The generic kind is built from its lobe only.
+    EXPECT_THROW(LtcLobe(LtcLobeKind::generic, 0.5, 0.3), Error);
+    EXPECT_THROW(LtcLobe(nullptr, 0.5, 0.3, 1, 1e-9), Error);
+}
 }  // namespace
 }  // namespace brdflut

@@ -320,15 +320,17 @@ TableDefinition ltc_table(LtcTableSpec e) {
 
 LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, const Options& options) {
     LtcTexelLobe lobe;
-    std::string known;
     {
         LobeRegistry& reg = lobe_registry();
         std::lock_guard<std::mutex> lock(reg.mutex);
         const auto it = reg.lobes.find(def.id);
-        if (it != reg.lobes.end()) lobe = it->second;
-        for (const auto& kv : reg.lobes) known += (known.empty() ? "" : ", ") + kv.first;
+        if (it == reg.lobes.end()) {
+            std::string known;
+            for (const auto& kv : reg.lobes) known += (known.empty() ? "" : ", ") + kv.first;
+            throw Error("table '" + def.id + "' is not an LTC table; allowed: " + known);
+        }
+        lobe = it->second;
     }
-    if (!lobe) throw Error("table '" + def.id + "' is not an LTC table; allowed: " + known);
     return lobe(roughness, mu, with_defaults(def.options, options));
 }
 
