@@ -110,61 +110,8 @@ TEST(ReadmeFigures, GgxDfgEvaluationsPerTexelAreTheCodesOwn) {
     EXPECT_EQ(find(records, "accuracy", "program", "ggx_dfg").at("evaluations_per_texel"), std::string(buf));
 }
 
-// Every command line of README.md's examples runs as quoted, from a folder
-// that holds the repository's tests/ (the examples read its fixtures), and
-// exits 0; and the README's picture is what the command it names writes.
-namespace {
-
-// The ./build/brdflut lines of the README's sh blocks, continuation lines
-// joined, without their trailing comments.
-std::vector<std::string> readme_commands() {
-    std::istringstream in(source_file("README.md"));
-    std::vector<std::string> out;
-    std::string line, pending;
-    bool sh = false;
-    while (std::getline(in, line)) {
-        if (line.rfind("```", 0) == 0) {
-            sh = line == "```sh";
-            continue;
-        }
-        if (!sh) continue;
-        if (!pending.empty()) {
-            pending += " " + line.substr(line.find_first_not_of(' '));
-        } else if (line.rfind("./build/brdflut ", 0) == 0) {
-            pending = line;
-        } else {
-            continue;
-        }
-        if (!pending.empty() && pending.back() == '\\') {
-            pending.pop_back();
-            continue;
-        }
-        const std::size_t hash = pending.find(" #");
-        if (hash != std::string::npos) pending.erase(hash);
-        while (!pending.empty() && pending.back() == ' ') pending.pop_back();
-        out.push_back(pending);
-        pending.clear();
-    }
-    return out;
-}
-
-}  // namespace
-
-TEST(Readme, EveryExampleCommandRunsAndExitsZero) {
-    const std::vector<std::string> commands = readme_commands();
-    ASSERT_GE(commands.size(), 6u);
-    test::TempDir dir;
-    std::filesystem::create_symlink(std::string(BRDFLUT_SOURCE_DIR) + "/tests", dir / "tests");
-    const std::string prefix = "./build/brdflut ";
-    for (const std::string& c : commands) {
-        ASSERT_EQ(c.rfind(prefix, 0), 0u) << c;
-        const std::string cmd = "cd '" + dir.path().string() + "' && '" + BRDFLUT_CLI + "' " + c.substr(prefix.size()) +
-                                " > /dev/null 2> '" + (dir / "err.txt") + "'";
-        const int status = std::system(cmd.c_str());
-        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << c << "\n" << test::read_file(dir / "err.txt");
-    }
-}
-
+// The README's picture is what the command it names writes. (Its command
+// lines, like those of docs/, run in tests/doc_commands.cpp.)
 TEST(Readme, PictureIsWhatItsCommandWrites) {
     const std::string readme_text = source_file("README.md");
     const std::string command = "./build/brdflut furnace ggx --plot docs/images";
