@@ -143,7 +143,7 @@ TableDefinition make(Kind kind, std::string id, std::string description, std::ve
     d.axes = std::move(axes);
     d.channels = std::move(channels);
     const bool f82 = kind == Kind::f82_dfg || kind == Kind::f82_dfg_avg;
-    if (f82) d.options = {tables::visibility_option({"height_correlated", "separable"})};
+    if (f82) d.options = {tables::visibility_option()};
     // Cycles' tables are Monte Carlo estimates themselves, but at the ends
     // of their z axes the weight is a rare event for any sampler ((1 - c)^e
     // with e up to 5e4, a dielectric of index 99.5 at grazing view): a
