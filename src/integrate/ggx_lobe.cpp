@@ -22,7 +22,11 @@ double GgxLobe::f(const Vec3& wo, const Vec3& wi) const {
     return ggx_D_along(ggx_.alpha, h) * g / (4.0 * wo.z * wi.z);
 }
 
-LobeHints GgxLobe::hints(const Vec3& wo) const { return microfacet_reflection_hints(wo, ggx_.alpha); }
+LobeHints GgxLobe::hints(const Vec3& wo) const {
+    LobeHints h = microfacet_reflection_hints(wo, ggx_.alpha);
+    for (double a : view_cones_) h.kink_cones.push_back({wo, a});
+    return h;
+}
 
 LobeSample GgxLobe::sample(const Vec3& wo, double u1, double u2) const {
     LobeSample s;
@@ -39,18 +43,35 @@ LobeSample GgxLobe::sample(const Vec3& wo, double u1, double u2) const {
         s.pdf = ggx_.G1(wo.z) * ggx_D_along(ggx_.alpha, m) / (4.0 * wo.z);
         return s;
     }
-    // Normals from D cos(theta_m): tan^2(theta_m) = alpha^2 u1 / (1 - u1).
-    // (Visible normals would make the estimate G2 / G1(mu_o), which near
-    // alpha = 0 is 1 but for rare draws below the horizon: a standard error
-    // from 1e5 draws then misses the loss of 1e-5 it estimates.)
-    const double t2 = ggx_.alpha * ggx_.alpha * u1 / (1.0 - u1);
-    const double cos_m = 1.0 / std::sqrt(1.0 + t2), sin_m = std::sqrt(t2) * cos_m, phi = kTwoPi * u2;
-    const Vec3 m{sin_m * std::cos(phi), sin_m * std::sin(phi), cos_m};
-    const double o_m = dot(wo, m);
-    if (!(o_m > 0.0)) return s;
-    s.wi = {2.0 * o_m * m.x - wo.x, 2.0 * o_m * m.y - wo.y, 2.0 * o_m * m.z - wo.z};
-    const double a2 = ggx_.alpha * ggx_.alpha, d = a2 + t2;
-    s.pdf = a2 / (kPi * cos_m * cos_m * cos_m * d * d) / (4.0 * o_m);  // D cos(theta_m) from tan^2
+    // A defensive mixture: half the draws reflect normals from D cos(theta_m)
+    // (tan^2(theta_m) = alpha^2 u / (1 - u)), half are cosine weighted. The
+    // density is at least half of each, so the estimate is bounded where f
+    // peaks and the tail of D (a share alpha^2 of the normals, which the
+    // first half alone would almost never draw at small alpha) is sampled
+    // too: the standard error then covers what it estimates. (Visible
+    // normals alone would make the estimate G2 / G1(mu_o), 1 but for rare
+    // draws below the horizon.)
+    const double a2 = ggx_.alpha * ggx_.alpha;
+    if (u1 < 0.5) {
+        const double u = 2.0 * u1;
+        const double t2 = a2 * u / (1.0 - u);
+        const double cos_m = 1.0 / std::sqrt(1.0 + t2), sin_m = std::sqrt(t2) * cos_m, phi = kTwoPi * u2;
+        const Vec3 m{sin_m * std::cos(phi), sin_m * std::sin(phi), cos_m};
+        const double o_m = dot(wo, m);
+        if (!(o_m > 0.0)) return s;
+        s.wi = {2.0 * o_m * m.x - wo.x, 2.0 * o_m * m.y - wo.y, 2.0 * o_m * m.z - wo.z};
+    } else {
+        const double u = 2.0 * u1 - 1.0, r = std::sqrt(u), phi = kTwoPi * u2;
+        s.wi = {r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - u)};
+    }
+    if (!(s.wi.z > 0.0)) return s;
+    // The density of wi under each half; D cos(theta_m) from the components
+    // of the half vector (from cos(theta_m) it would lose digits to
+    // 1 - cos^2 at small alpha).
+    const Vec3 h{wo.x + s.wi.x, wo.y + s.wi.y, wo.z + s.wi.z};
+    const double hl = std::sqrt(dot(h, h)), o_h = dot(wo, h) / hl;
+    const double p_normals = o_h > 0.0 ? ggx_D_along(ggx_.alpha, h) * (h.z / hl) / (4.0 * o_h) : 0.0;
+    s.pdf = 0.5 * p_normals + 0.5 * s.wi.z * kInvPi;
     return s;
 }
 

@@ -37,7 +37,9 @@ const char* kQuadratureRule =
     "upper hemisphere; averages: adaptive Gauss-Kronrod (10,21) over mu; alpha below 2e-6: the mirror "
     "limit; error per value: QUADPACK estimate plus the integrated inner estimates plus a bound on the "
     "rounding of the directions";
-const char* kMcSampler = "GGX visible normals (Heitz 2018), reflected";
+const char* kMcSampler =
+    "equal mixture of reflected GGX normals from D cos(theta_h) and the cosine-weighted hemisphere "
+    "(Cycles' tables: GGX visible normals, reflected)";
 
 const char* kA = "A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i";
 const char* kB = "B: integral of f (1 - v.h)^5 cos(theta_i) dw_i";
@@ -67,6 +69,14 @@ enum class Kind {
 };
 
 double exponent_of_z(double z) { return 5.0 * (1.0 - z) / z; }
+
+// (1 - c)^e with e < 1 has a cusp at c = 1 (wi = wo): the cones about wo
+// where 1 - c = 10^-k, k = 1..8, let the rule resolve it at every scale.
+std::vector<double> cusp_cones() {
+    std::vector<double> out;
+    for (int k = 1; k <= 8; ++k) out.push_back(2.0 * std::acos(1.0 - std::pow(10.0, -k)));
+    return out;
+}
 
 class MomentEvaluator final : public TexelEvaluator {
 public:
@@ -120,7 +130,8 @@ public:
             out.value[0] = w(std::clamp(mu, 0.0, 1.0));
             return out;
         }
-        const GgxLobe lobe(alpha, Visibility::height_correlated, GgxLobeKind::vndf);
+        GgxLobe lobe(alpha, Visibility::height_correlated, GgxLobeKind::vndf);
+        if (kind_ == Kind::cycles_schlick && w.p < 1.0) lobe.set_view_cones(cusp_cones());
         store(mc_ ? generic_moments_mc<1>(lobe, mu, {w}, samples_, seed) : generic_moments<1>(lobe, mu, {w}, opt),
               1);
         return out;
@@ -330,12 +341,12 @@ void register_fresnel_moment_family(FamilyEntries& family) {
     const nlohmann::json none;
     TableDefinition dfg = make(Kind::f82_dfg, "ggx_dfg_f82",
                                "GGX split sums A, B and the F82-tint moment C: E = F0 A + B - b C",
-                               {tables::cos_theta_axis(), tables::alpha_axis()}, {kA, kB, kC}, none);
+                               {tables::cos_theta_axis(64), tables::alpha_axis(64)}, {kA, kB, kC}, none);
     dfg.checks = {f82_dfg_alpha_one(), f82_dfg_half_vector()};
     out.push_back(std::move(dfg));
     TableDefinition avg = make(Kind::f82_dfg_avg, "ggx_dfg_f82_avg",
                                "Averages 2 * integral of (A, B, C)(mu) mu dmu: E_avg = F0 A_avg + B_avg - b C_avg",
-                               {tables::alpha_axis()},
+                               {tables::alpha_axis(32)},
                                {"A_avg: 2 * integral of A(mu) mu dmu", "B_avg: 2 * integral of B(mu) mu dmu",
                                 "C_avg: 2 * integral of C(mu) mu dmu"},
                                none);
