@@ -6,6 +6,7 @@
 
 #include "brdflut/fresnel.h"
 #include "brdflut/generic_lobe.h"
+#include "brdflut/ggx_lobe.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/glass_integrals.h"
 #include "brdflut/ltc_fit.h"
@@ -34,39 +35,8 @@ private:
     Charlie charlie_;
 };
 
-// GGX's D at the direction of m (any length, m.z > 0), from its components
-// as the generic path expects of a lobe.
-double ggx_D_along(double alpha, const Vec3& m) {
-    const double t2 = (m.x * m.x + m.y * m.y) / (m.z * m.z);
-    const double a2 = alpha * alpha, c2 = 1.0 / (1.0 + t2), d = a2 + t2;
-    return a2 / (kPi * c2 * c2 * d * d);
-}
-
 // The hints of a GGX reflection lobe: its peak at the mirror direction.
-LobeHints ggx_reflection_hints(const Vec3& wo, double alpha) {
-    LobeHints h;
-    h.has_peak = true;
-    h.peak = {-wo.x, -wo.y, wo.z};
-    h.width = 2.0 * alpha;
-    h.aspect = std::min(1.0, wo.z + alpha);
-    return h;
-}
-
-// GGX (F = 1) from microfacet.h.
-class GgxLobe final : public GenericLobe {
-public:
-    explicit GgxLobe(double alpha, Visibility vis = Visibility::height_correlated) : ggx_{alpha}, vis_(vis) {}
-    double f(const Vec3& wo, const Vec3& wi) const override {
-        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
-        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
-        return ggx_D_along(ggx_.alpha, h) * ggx_.G2(wo.z, wi.z, vis_) / (4.0 * wo.z * wi.z);
-    }
-    LobeHints hints(const Vec3& wo) const override { return ggx_reflection_hints(wo, ggx_.alpha); }
-
-private:
-    Ggx ggx_;
-    Visibility vis_;
-};
+LobeHints ggx_reflection_hints(const Vec3& wo, double alpha) { return microfacet_reflection_hints(wo, alpha); }
 
 // The rough dielectric of ggx_glass (glass_integrals.h) as two lobes, each
 // from its BSDF alone: wo on the near side of an interface of relative

@@ -226,7 +226,12 @@ TEST(Presets, EveryRecipeNamesCoreTablesTheirChannelsAndOptions) {
             EXPECT_FALSE(preset_tables(p.preset.name).empty()) << p.preset.name;
             continue;
         }
-        EXPECT_EQ(preset_tables(p.preset.name).size(), p.tables.size()) << p.preset.name;
+        // Every recipe is in the catalogue; a family may add tables of its
+        // own to the preset (Cycles' generalized-Schlick tables,
+        // fresnel_moment_tables.cpp).
+        std::size_t recipes = 0;
+        for (const TableDefinition* d : preset_tables(p.preset.name)) recipes += d->family == "preset" ? 1 : 0;
+        EXPECT_EQ(recipes, p.tables.size()) << p.preset.name;
         for (const tables::RecipeTable& t : p.tables) {
             const TableDefinition& def = find_table(t.id);
             EXPECT_EQ(def.preset, p.preset.name);

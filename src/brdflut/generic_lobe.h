@@ -146,6 +146,11 @@ public:
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
 };
 
+// The hints of a microfacet reflection lobe of width alpha: its peak at the
+// mirror direction, width 2 alpha in the plane of incidence (wi turns twice
+// as far as the half vector), aspect min(1, mu_o + alpha) across it.
+LobeHints microfacet_reflection_hints(const Vec3& wo, double alpha);
+
 // A weight of the moments as a function of c = wo.h and one parameter p:
 // w(c) = f(c, p). The Fresnel factors engines split out of their tables:
 namespace moment_weight {
@@ -153,8 +158,15 @@ double one(double c, double p);                   // 1
 double schlick(double c, double p);               // (1 - c)^5
 double one_minus_schlick(double c, double p);     // 1 - (1 - c)^5
 double schlick_power(double c, double p);         // (1 - c)^p: generalized Schlick
-double f82(double c, double p);                   // c (1 - c)^6: the F82-tint correction (Kutz et al. 2021)
+double f82(double c, double p);                   // c (1 - c)^6: the F82-tint correction (Kutz et al. 2021;
+                                                  // the whole Fresnel in f82.h)
 double dielectric_fresnel(double c, double p);    // exact unpolarized Fresnel reflectance at c, eta = p
+// The exact dielectric Fresnel remapped from [F0, 1] to [0, 1]:
+// (F(c, eta) - F0) / (1 - F0), F0 = ((eta - 1)/(eta + 1))^2, eta = p > 0,
+// clamped to [0, 1] (0 at eta = 1). A Fresnel F0' + (F90 - F0') s that
+// follows the dielectric's shape (Blender Cycles' generalized Schlick with a
+// negative exponent) has the moments F0' M_1 + (F90 - F0') M_s.
+double dielectric_remapped(double c, double p);
 }  // namespace moment_weight
 struct MomentWeight {
     double (*f)(double c, double p) = moment_weight::one;

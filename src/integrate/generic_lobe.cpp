@@ -20,6 +20,20 @@ double moment_weight::f82(double c, double) {
     return c * m2 * m2 * m2;
 }
 double moment_weight::dielectric_fresnel(double c, double p) { return fresnel_dielectric(c, p); }
+double moment_weight::dielectric_remapped(double c, double p) {
+    const double r = (p - 1.0) / (p + 1.0), f0 = r * r;
+    if (!(f0 < 1.0) || !(f0 > 0.0)) return 0.0;
+    return std::clamp((fresnel_dielectric(c, p) - f0) / (1.0 - f0), 0.0, 1.0);
+}
+
+LobeHints microfacet_reflection_hints(const Vec3& wo, double alpha) {
+    LobeHints h;
+    h.has_peak = true;
+    h.peak = {-wo.x, -wo.y, wo.z};
+    h.width = 2.0 * alpha;
+    h.aspect = std::min(1.0, wo.z + alpha);
+    return h;
+}
 
 namespace {
 

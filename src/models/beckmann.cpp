@@ -66,14 +66,7 @@ Vec3 Beckmann::sample_normal(double u1, double u2) const {
 
 namespace brdflut {
 
-LobeHints BeckmannLobe::hints(const Vec3& wo) const {
-    LobeHints h;
-    h.has_peak = true;
-    h.peak = {-wo.x, -wo.y, wo.z};
-    h.width = 2.0 * model_.alpha;
-    h.aspect = std::min(1.0, wo.z + model_.alpha);
-    return h;
-}
+LobeHints BeckmannLobe::hints(const Vec3& wo) const { return microfacet_reflection_hints(wo, model_.alpha); }
 
 LobeSample BeckmannLobe::sample(const Vec3& wo, double u1, double u2) const {
     LobeSample s;

@@ -105,6 +105,17 @@ ClosedFormCheck split_at_one(int a, int b, bool schlick) {
             }};
 }
 
+// EEVEE's brdf_ggx, axes (roughness, cos_theta): R + G at roughness 1
+// with the separable Smith G, whose G1 at alpha = 1 is 2 mu / (1 + mu).
+ClosedFormCheck separable_at_one() {
+    return {"R + G at roughness 1 vs 2 (1 - ln 2)/(1 + mu) (separable Smith, alpha = 1)", 2 * kGgx + 1e-12,
+            [](const TexelEvaluator& e) {
+                return worst_error(e, grid_points({1.0}, kMus), [](const TexelValue& v, const auto& p) {
+                    return v.value[0] + v.value[1] - ggx_schlick_albedo_alpha_one(p[1]);
+                });
+            }};
+}
+
 // Charlie sheen E at normal incidence in channel c, roughness axis second.
 ClosedFormCheck charlie_normal(int c) {
     return {"Charlie E(1, r) vs 2^(1 - n/2) / (n + 2), n = 2 + 1/r^2", kSheenAbsTolerance + 1e-12,
@@ -246,8 +257,9 @@ std::vector<PresetDeclaration> declare() {
            {checks::split_at_one(-1, 1, false), checks::disney_diffuse_smooth(2)}}}});
     all.push_back(
         {{"cycles",
-          "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points), table_ggx_Eavg and the "
-          "four rough glass tables (16^3 and 16^2, z = sqrt((n-1)/(n+1)))",
+          "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points), table_ggx_Eavg, the "
+          "four rough glass tables (16^3 and 16^2, z = sqrt((n-1)/(n+1))) and the two generalized-Schlick "
+          "tables (16^3, fresnel_moment_tables.cpp)",
           PixelType::float32},
          {{"cycles_ggx_e", "Cycles table_ggx_E: GGX albedo E, x = sqrt(alpha), rows mu, end points", cycles_source,
            {alpha_sqrt_linear(32), cos_theta(32, Placement::endpoints)},
@@ -278,6 +290,32 @@ std::vector<PresetDeclaration> declare() {
                 "Cycles table_ggx_glass_inv_Eavg: average of E_R + E_T at eta = 1/n over (sqrt(alpha), z)",
                 "ggx_glass_albedo_avg_inside", true,
                 "E_avg: 2 * integral of (E_R + E_T)(mu) mu dmu at eta = 1/n")}});
+    // EEVEE's brdf_ggx (eevee_lut_comp.glsl, ggx_brdf_split_sum): x =
+    // roughness (alpha = x^2), y = sqrt(1 - cos(theta)), end points, NV
+    // clamped to [1e-4, 0.9999], separable Smith G; channels scale, bias and
+    // the F82-tint metal_bias.
+    nlohmann::json eevee_model = ggx_model(Visibility::separable);
+    eevee_model["fresnel"] = "F82-tint, factored out: F0 * R + F90 * G - b * B, b as fresnel_f82tint_B";
+    AxisSpec eevee_y = cos_theta(64, Placement::endpoints, Warp::square);
+    eevee_y.axis.min = 1.0;
+    eevee_y.axis.max = 0.0;
+    eevee_y.axis.clamp_lo = 1e-4;
+    eevee_y.axis.clamp_hi = 0.9999;
+    eevee_y.meaning = "cos(theta_o) = 1 - y^2 (y = sqrt(1 - cos(theta_o))), clamped to [1e-4, 0.9999]";
+    all.push_back(
+        {{"eevee", "Blender EEVEE's brdf_ggx: 64x64 split sums with the F82-tint channel, x = roughness, "
+                   "y = sqrt(1 - cos theta), end points, separable Smith G",
+          PixelType::float32},
+         {{"eevee_brdf_ggx", "EEVEE brdf_ggx: specular = F0 * R + F90 * G - b * B (F82 tint)",
+           "blender/blender source/blender/draw/engines/eevee/shaders/eevee_lut_comp.glsl (ggx_brdf_split_sum), "
+           "eevee_lut.cc",
+           {roughness(64, Placement::endpoints), eevee_y},
+           {{"R: scale, integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i", {{"ggx_dfg_f82", 0}}},
+            {"G: bias, integral of f (1 - v.h)^5 cos(theta_i) dw_i", {{"ggx_dfg_f82", 1}}},
+            {"B: metal_bias, integral of f (v.h) (1 - v.h)^6 cos(theta_i) dw_i", {{"ggx_dfg_f82", 2}}}},
+           {{"visibility", "separable"}},
+           eevee_model,
+           {checks::separable_at_one()}}}});
     all.push_back(
         {{"gltf", "glTF-IBL-Sampler's LUTs: GGX split sum (RG) and Charlie (B), cell centres, 128x128 here",
           PixelType::half},
