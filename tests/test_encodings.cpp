@@ -9,6 +9,7 @@
 #include <fstream>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "brdflut/error.h"
@@ -366,5 +367,31 @@ TEST(Encoding, FuzzSeedsOfTheEncodingsReadAsTables) {
         EXPECT_EQ(img.storage, storage);
         EXPECT_EQ(img.width, 4);
         EXPECT_EQ(img.height, 4);
+    }
+}
+
+// sample reads an encoded file as values: filtered, within half a step of
+// the same point sampled from float storage (bilinear weights sum to 1).
+TEST(Encoding, CliSamplesEncodedFilesAsValues) {
+    TempDir dir;
+    const std::string out = dir / "o";
+    auto value_of = [](const std::string& text, const std::string& channel) {
+        const std::size_t at = text.find(channel + " = ");
+        return at == std::string::npos ? NAN : std::stod(text.substr(at + channel.size() + 3));
+    };
+    auto r = run_cli("generate ggx_dfg --size 16x8 -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto reference = run_cli("sample '" + out + "/ggx_dfg.exr' --at cos_theta=0.43,alpha=0.31", dir);
+    ASSERT_EQ(reference.exit_code, 0) << reference.err;
+    for (const auto& [encoding, step] : {std::pair{"unorm8", 1.0 / 255.0}, std::pair{"unorm16", 1.0 / 65535.0}}) {
+        SCOPED_TRACE(encoding);
+        r = run_cli("generate ggx_dfg --size 16x8 --format png --encoding " + std::string(encoding) + " -q -o '" + out + "'", dir);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const auto s = run_cli("sample '" + out + "/ggx_dfg.png' --at cos_theta=0.43,alpha=0.31", dir);
+        ASSERT_EQ(s.exit_code, 0) << s.err;
+        for (const char* c : {"R", "G"}) {
+            const double got = value_of(s.out, c), want = value_of(reference.out, c);
+            EXPECT_LE(std::abs(got - want), 0.5 * step + 1e-7) << c << ": " << s.out;
+        }
     }
 }
