@@ -2,6 +2,7 @@
 
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -109,29 +110,6 @@ PixelType pixel_type_from_string(std::string_view s) {
     throw Error("pixel type '" + std::string(s) + "' is not known; allowed: half, float");
 }
 
-Storage storage_of(PixelType p) { return p == PixelType::half ? Storage::half : Storage::float32; }
-
-std::string_view to_string(Storage s) {
-    switch (s) {
-        case Storage::half: return "half";
-        case Storage::float32: return "float";
-        case Storage::unorm16: return "unorm16";
-    }
-    return "float";
-}
-
-double round_to_storage(double v, Storage s) {
-    switch (s) {
-        case Storage::half:
-            return static_cast<double>(static_cast<float>(Imath::half(static_cast<float>(v))));
-        case Storage::float32: return static_cast<double>(static_cast<float>(v));
-        case Storage::unorm16: return std::round(v * 65535.0) / 65535.0;  // as png16_sample
-    }
-    return v;
-}
-
-double round_to_storage(double v, PixelType p) { return round_to_storage(v, storage_of(p)); }
-
 int Table::height() const {
     int h = axes.size() > 1 ? axes[1].count : 1;
     if (axes.size() > 2) h *= axes[2].count;
@@ -148,11 +126,16 @@ double error_bound(const Table& t, PixelType p) { return error_bound(t, storage_
 
 double error_bound(const Table& t, Storage s) {
     double bound = 0.0;
-    for (std::size_t i = 0; i < t.values.size(); ++i) {
-        const double v = t.values[i];
-        const double rounding = std::abs(round_to_storage(v, s) - v);
-        const double e = (i < t.errors.size() ? t.errors[i] : 0.0) + rounding;
-        bound = std::max(bound, e);
+    const std::size_t nc = t.channels.empty() ? 1 : t.channels.size();
+    const int n = static_cast<int>(std::min<std::size_t>(nc, 4));
+    double rounded[4];
+    for (std::size_t i = 0; i < t.values.size(); i += nc) {
+        if (i + nc > t.values.size() || nc > 4) break;
+        round_texel(s, &t.values[i], n, rounded);
+        for (std::size_t c = 0; c < nc; ++c) {
+            const double rounding = std::abs(rounded[c] - t.values[i + c]);
+            bound = std::max(bound, (i + c < t.errors.size() ? t.errors[i + c] : 0.0) + rounding);
+        }
     }
     return bound;
 }
@@ -188,6 +171,7 @@ nlohmann::json metadata_json(const Table& t, Storage s) {
     j["channels"] = t.channels;
     j["method"] = t.method;
     j["pixel"] = to_string(s);
+    if (is_integer(s)) j["decode"] = decode_rule(s);
     j["error_bound"] = error_bound(t, s);
     return j;
 }

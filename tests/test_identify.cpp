@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <set>
 
 #include "brdflut/catalogue.h"
@@ -245,4 +246,83 @@ TEST(Identify, CyclesGgxEFromBlendersSourceIsItsPresetWithTheViewCosineClamped) 
     EXPECT_EQ(run_cli(cmd.substr(8), dir).exit_code, 0);
     auto unclamped = run_cli("compare " + file + " --array table_ggx_E --shape 32x32 --as cycles_ggx_e --tolerance 1e-2", dir);
     EXPECT_EQ(unclamped.exit_code, 1) << unclamped.out;
+}
+
+// A flat array: identify tries its 1-D reading and every factorization of
+// its length, and with no shape given names Cycles' table in its 32x32
+// layout; the compare line it prints passes.
+TEST(Identify, CyclesFlatArrayWithNoShapeIsItsPreset) {
+    TempDir dir;
+    const std::string file = std::string("'") + BRDFLUT_SOURCE_DIR + "/tests/fixtures/cycles/shader.tables'";
+    auto id = run_cli("identify " + file + " --array table_ggx_E --top 2 --json", dir);
+    ASSERT_EQ(id.exit_code, 0) << id.err;
+    const auto j = nlohmann::json::parse(id.out);
+    const auto& best = j.at("explanations").at(0);
+    EXPECT_EQ(best.at("table"), "cycles_ggx_e") << best.dump(2);
+    EXPECT_EQ(best.at("flat_shape"), "32x32");
+    EXPECT_LT(best.at("max_error").get<double>(), 1.5e-6);
+    EXPECT_TRUE(best.at("pass").get<bool>());
+    const std::string cmd = best.at("compare").get<std::string>();
+    EXPECT_EQ(cmd.find("--size"), std::string::npos) << cmd;  // 32x32 is the preset's own
+    EXPECT_EQ(run_cli(cmd.substr(8), dir).exit_code, 0) << cmd;
+}
+
+// compare --as on a flat array takes the shape from the table's layout.
+TEST(Identify, CompareGivesAFlatArrayTheShapeOfTheTable) {
+    TempDir dir;
+    const std::string file = std::string("'") + BRDFLUT_SOURCE_DIR + "/tests/fixtures/cycles/shader.tables'";
+    auto r = run_cli("compare " + file + " --array table_ggx_E --as cycles_ggx_e --clamp cos_theta=0.0001:inf --json", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    // A layout whose texel count is not the array's length is refused, naming both.
+    r = run_cli("compare " + file + " --array table_ggx_E --as cycles_ggx_e --size 16x16", dir);
+    EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+    EXPECT_NE(r.err.find("flat array of 1024 numbers"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("16x16 texels"), std::string::npos) << r.err;
+}
+
+// The done condition of issue 33: Cycles' file as shipped, with no layout
+// option, passes against cycles_ggx_e. It needs the preset to carry Cycles'
+// clamp cos_theta >= 1e-4 (added with the presets' recipes).
+TEST(Identify, CyclesFileAsShippedPassesCompareAgainstItsPreset) {
+    TempDir dir;
+    const std::string file = std::string("'") + BRDFLUT_SOURCE_DIR + "/tests/fixtures/cycles/shader.tables'";
+    auto r = run_cli("compare " + file + " --array table_ggx_E --as cycles_ggx_e", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+}
+
+// Heitz's ltc_2 (three.js's copy): identify searches the LTC norm tables and
+// names ltc_2 first, on its own axes in its own order (roughness columns,
+// rows sqrt(1 - cos theta), end points, theta clamped to 1.57 inside the
+// lobe), not cell-centred rows. (Heitz's grazing n0 is about 6 % low, and a
+// further view-cosine clamp at the grid end may rank first on the largest
+// error; that is not checked here.)
+TEST(Identify, HeitzLtc2IsNamedAsHisLayout) {
+    std::ifstream in(std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/ltc/three_ltc_2.txt");
+    ExrImage img;
+    img.width = 64;
+    img.height = 64;
+    img.channel_names = {"R", "G", "B", "A"};
+    double x;
+    while (in >> x) img.pixels.push_back(x);
+    ASSERT_EQ(img.pixels.size(), 64u * 64u * 4u);
+    const IdentifyReport rep = identify(img, {3, 0});
+    ASSERT_FALSE(rep.explanations.empty());
+    const Explanation& e = rep.explanations.front();
+    EXPECT_EQ(e.description.def->id, "ltc_2") << findings_of(e);
+    const TableSettings own = default_settings(find_table("ltc_2"));
+    ASSERT_EQ(e.description.settings.axes.size(), own.axes.size());
+    for (std::size_t a = 0; a < own.axes.size(); ++a) {
+        const Axis& got = e.description.settings.axes[a];
+        const Axis& want = own.axes[a];
+        EXPECT_EQ(got.name, want.name);
+        EXPECT_EQ(got.placement, Placement::endpoints);
+        EXPECT_EQ(got.warp, want.warp);
+        EXPECT_EQ(got.min, want.min);
+        EXPECT_EQ(got.max, want.max);
+        EXPECT_EQ(got.shift, 0.0);
+        EXPECT_FALSE(got.flip);
+    }
+    const std::vector<std::vector<int>> own_channels{{0}, {1}, {2}, {3}};
+    const auto& map = e.description.settings.channel_map;
+    EXPECT_TRUE(map.empty() || map == own_channels) << findings_of(e);
 }

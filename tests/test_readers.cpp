@@ -242,7 +242,7 @@ TEST(NpyReader, IntegerArraysAreUnormAndA4dShapeStacksItsSlicesAsRows) {
     EXPECT_EQ(img.width, 2);
     EXPECT_EQ(img.height, 6);
     EXPECT_EQ(img.depth, 2);
-    EXPECT_TRUE(img.unorm8);
+    EXPECT_TRUE(img.is_unorm8());
     // Row z * 3 + y, column x, channel c.
     const auto at = [&](int z, int y, int x, int c) { return img.pixels[static_cast<std::size_t>(((z * 3 + y) * 2 + x) * 2 + c)]; };
     EXPECT_EQ(at(1, 2, 1, 1), (10 + 8 + 2 + 1) / 255.0);
@@ -250,7 +250,7 @@ TEST(NpyReader, IntegerArraysAreUnormAndA4dShapeStacksItsSlicesAsRows) {
     // u2, big-endian: q / 65535.
     write(dir / "u2.npy", npy(">u2", "(1, 2)", std::string("\xff\xff\x12\x34", 4)));
     img = read_table_image(dir / "u2.npy");
-    EXPECT_TRUE(img.unorm16);
+    EXPECT_TRUE(img.is_unorm16());
     EXPECT_EQ(img.pixels, (std::vector<double>{1.0, 0x1234 / 65535.0}));
     // A given shape reinterprets the numbers: (12,) as 2x3:2.
     write(dir / "flat.npy", npy("|u1", "(12,)", u1.substr(0, 12)));
@@ -348,7 +348,7 @@ TEST(PngReader, EightBitImagesOfEveryColourTypeReadAsQOver255WithLinearDecoding)
         const ExrImage img = read_table_image(dir / "t.png", linear);
         EXPECT_EQ(img.width, 3);
         EXPECT_EQ(img.height, 2);
-        EXPECT_TRUE(img.unorm8);
+        EXPECT_TRUE(img.is_unorm8());
         ASSERT_EQ(img.channel_names.size(), static_cast<std::size_t>(k.channels));
         ASSERT_EQ(img.pixels.size(), s.size());
         for (std::size_t i = 0; i < s.size(); ++i) EXPECT_EQ(img.pixels[i], s[i] / 255.0) << i;
@@ -372,7 +372,7 @@ TEST(PngReader, SrgbDecodingAppliesTheExactEotfToColourButNotAlpha) {
     // 16-bit grey: q / 65535, then the EOTF.
     write(dir / "g16.png", make_png(2, 1, PNG_COLOR_TYPE_GRAY, 16, {0x80, 0x00, 0x00, 0x10}));
     const ExrImage g = read_table_image(dir / "g16.png", srgb);
-    EXPECT_TRUE(g.unorm16);
+    EXPECT_TRUE(g.is_unorm16());
     EXPECT_DOUBLE_EQ(g.pixels[0], srgb_eotf(0x8000 / 65535.0));
     EXPECT_DOUBLE_EQ(g.pixels[1], 16 / 65535.0 / 12.92);
     // On float data the sRGB decoding is refused.

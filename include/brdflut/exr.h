@@ -26,8 +26,17 @@ struct ExrImage {
     // counts the rows of all of them, row = z * (height / depth) + y.
     int depth = 1;
     PixelType pixel = PixelType::float32;
-    bool unorm16 = false;  // 16-bit integers v * 65535 (png16); pixels holds them as v
-    bool unorm8 = false;   // 8-bit integers v * 255 (PNG, npy u1); pixels holds them as v
+    // How the file stores the values: half or float32 (pixel), or an integer
+    // encoding (PNG, npy u1/u2, dds and ktx2 UNORM formats), which pixels
+    // holds decoded.
+    Storage storage = Storage::float32;
+    // The spacing of the encoding around each value (layout of pixels) where
+    // it varies from texel to texel (rgbd); empty otherwise.
+    std::vector<double> steps;
+    bool is_unorm8() const { return storage == Storage::unorm8; }
+    bool is_unorm16() const { return storage == Storage::unorm16; }
+    // The name of the stored type: the integer encoding's, or the pixel type's.
+    std::string_view stored_as() const { return is_integer(storage) ? to_string(storage) : to_string(pixel); }
     // Numbers printed in a source file in fixed point, all with the same
     // count of decimals: the unit of the last digit (1e-6 for "0.998773f");
     // 0 otherwise.

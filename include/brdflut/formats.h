@@ -10,6 +10,8 @@
 //          1 channel: grey; 2 channels: RGB with B = 0 (not grey + alpha,
 //          which engines expand to (R, R, R, G)); 3: RGB; 4: RGBA.
 //          Metadata in the compressed iTXt chunk with keyword `brdflut`.
+//   png    the same for the encodings unorm16 (= png16), unorm8 (8-bit
+//          samples) and rgbd (8-bit RGBA, brdflut/table.h says how).
 //   dds    DirectDraw Surface with the DX10 header extension, a 2-D texture
 //          (height 1 for one-axis tables), one mip level.
 //   ktx2   KTX 2.0, a 2-D texture (pixelHeight 1 for one-axis tables), one
@@ -17,7 +19,9 @@
 //
 // dds and ktx2 store 1, 2 or 4 channels as R16_FLOAT / R16G16_FLOAT /
 // R16G16B16A16_FLOAT (half) or R32_FLOAT / R32G32_FLOAT / R32G32B32A32_FLOAT
-// (float); a 3-channel table is stored as 4 channels with A = 1, because no
+// (float), the same in R8/R16 UNORM (unorm8, unorm16), R10G10B10A2_UNORM
+// (rgb10a2, Vulkan A2B10G10R10_UNORM_PACK32) and R8G8B8A8_UNORM (rgbd)
+// (io/gpu_formats.cpp lists them); a 3-channel table is stored as 4 channels with A = 1, because no
 // 3-channel 16-bit float texture format exists in DXGI and the 3-channel
 // Vulkan formats are rarely sampleable. Row 0 of every image is the first
 // row of the table (index 0 of the second axis), data little-endian.
@@ -31,15 +35,21 @@
 
 namespace brdflut {
 
-enum class Format { exr, cpp, png16, dds, ktx2 };
+enum class Format { exr, cpp, png16, png, dds, ktx2 };
 
 std::string_view to_string(Format f);                 // "exr", "cpp", ...
 Format format_from_string(std::string_view s);        // throws brdflut::Error listing the allowed names
 std::string file_extension(Format f);                 // "exr", "h", "png", "dds", "ktx2" (no dot)
 
-// How the values are stored in format f with the given pixel type: png16
-// always stores unorm16; the other formats store the pixel type.
+// How the values are stored in format f with the given pixel type: the
+// pixel type where f holds it, else f's own (png16 and png: unorm16).
 Storage storage_for(Format f, PixelType pixel);
+// Whether format f can hold storage s (exr, cpp: half, float; png16:
+// unorm16; png: unorm16, unorm8, rgbd; dds, ktx2: all); the list for f.
+bool format_holds(Format f, Storage s);
+std::string format_storages(Format f);
+// Throws brdflut::Error naming the encoding, the format and what it allows.
+void check_format_holds(Format f, Storage s);
 
 // The C++ identifier used as the namespace of a table in a cpp header:
 // the id with characters outside [A-Za-z0-9_] replaced by '_', runs of '_'
@@ -52,6 +62,9 @@ std::string cpp_identifier(std::string_view table_id);
 // outside [0, 1] (Error), naming the table, texel, channel and value, before
 // any file is created.
 void write_table(const std::string& path, const Table& table, PixelType pixel, Format f);
+// The same with a storage type (an integer encoding, say): Error when f
+// cannot hold it, or for values outside its range or too many channels.
+void write_table(const std::string& path, const Table& table, Storage storage, Format f);
 
 // How a file that is not brdflut's own is to be read (the command-line
 // options --array, --shape and --decode).
@@ -59,9 +72,10 @@ enum class Decode {
     none,    // brdflut files; a PNG without brdflut metadata is refused
     linear,  // integer samples q as q / (2^bits - 1)
     srgb,    // the same, then the exact sRGB EOTF (channels 1 to 3; a 4th is alpha, linear)
+    rgbd,    // 8-bit RGBA as Babylon.js's RGBD: (q / 255)^2.2 / (a / 255), 3 channels
 };
-std::string_view to_string(Decode d);           // "none", "linear", "srgb"
-Decode decode_from_string(std::string_view s);  // "linear" or "srgb"; throws brdflut::Error otherwise
+std::string_view to_string(Decode d);           // "none", "linear", "srgb", "rgbd"
+Decode decode_from_string(std::string_view s);  // "linear", "srgb" or "rgbd"; throws brdflut::Error otherwise
 
 // How the numbers of an array or a .npy file form an image: width x height
 // texels (x fastest), `depth` slices stacked as rows (row = z * height + y)
@@ -88,13 +102,15 @@ struct ReadOptions {
 
 // Reads a table file, recognised by its first bytes, into the same structure
 // as read_exr():
-//   exr, dds, ktx2 and png16 as brdflut writes them (dds and ktx2 also as
+//   exr, dds, ktx2, png16 and png as brdflut writes them, in every
+//       encoding (an rgbd ktx2 or png by its metadata; an rgbd dds, which
+//       has no metadata, with options.decode rgbd) (dds and ktx2 also as
 //       3-D textures: DX10 TEXTURE3D with DDSD_DEPTH, KTX2 pixelDepth > 0,
 //       read with depth = the slice count, slices stacked as rows);
 //   any PNG libpng reads (8 or 16 bits, grey, grey + alpha, RGB, RGBA,
 //       palette expanded to RGB or RGBA): samples q read as q / 255 or
 //       q / 65535 (unorm8 / unorm16). One without brdflut metadata needs
-//       options.decode (linear or srgb);
+//       options.decode (linear, srgb, or rgbd for 8-bit RGBA);
 //   NumPy .npy, versions 1 to 3, dtypes f2, f4, f8, u1, u2 (u1 and u2 read
 //       as q / 255 and q / 65535), either byte order, C order, shape (W),
 //       (H, W), (H, W, C) with C <= 4, (D, H, W) or (D, H, W, C);

@@ -25,6 +25,12 @@
 //    compare_values, so their figures and verdicts are those of `brdflut
 //    compare` with the printed arguments.
 //
+// A flat array (one row, as a source array of one dimension reads) is
+// searched as it is (1-D tables) and as every factorization W x H of its
+// length with W, H >= 4 (2-D tables); the explanations of all are ranked
+// together, and the compare line of a 2-D one adds --size when the shape is
+// not the table's default.
+//
 // The result does not depend on the thread count.
 #pragma once
 
@@ -60,6 +66,8 @@ struct Explanation {
     int cost = 0;
     // The arguments that make `brdflut compare FILE` check this description.
     std::string compare_arguments;
+    // A flat array read as this 2-D shape ("32x32"); empty otherwise.
+    std::string flat_shape;
 };
 
 struct IdentifyReport {

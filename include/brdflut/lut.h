@@ -43,6 +43,15 @@ LutDescription describe_from_metadata(const ExrImage& img, const std::string& pa
 // Throws RuntimeError when the image's size or channels do not fit.
 void check_fits(const ExrImage& img, const LutDescription& d, const std::string& path);
 
+// Whether img is a flat array: one row of one slice, as a source array or
+// .npy of one dimension reads.
+bool is_flat(const ExrImage& img);
+// Gives a flat array the shape of `axes` (storage order): width the first
+// axis's count, rows the product of the others, with 1 channel or, when its
+// length is the texel count times `table_channels`, that many interleaved.
+// Throws RuntimeError naming the file, its length and what the layout needs.
+void reshape_flat(ExrImage& img, const std::vector<Axis>& axes, int table_channels, const std::string& path);
+
 struct ChannelError {
     std::string channel;  // file channel name
     double max_abs = 0.0;
@@ -70,11 +79,16 @@ struct Tolerance {
 // Parses --tolerance: "X" (absolute) or "X%" (relative to the exact value);
 // throws Error naming the value and the allowed forms.
 Tolerance parse_tolerance(const std::string& s);
-// The default: a brdflut file's claimed error_bound; for a foreign file one
-// storage step of its pixel type.
+// The default: one step of the encoding for a file of integers (unorm8,
+// unorm16, rgb10a2, rgbd: brdflut's or foreign); a brdflut file's claimed
+// error_bound for float storage; for a foreign file one storage step of its
+// pixel type.
 Tolerance default_tolerance(const ExrImage& img);
-// The spacing of the stored type of img at value v.
+// The spacing of the stored type of img at value v; with the index of the
+// value in img.pixels, the spacing there for encodings whose step varies
+// (rgbd).
 double storage_step(const ExrImage& img, double v);
+double storage_step(const ExrImage& img, std::size_t index, double v);
 
 struct CompareReport {
     std::vector<ChannelError> channels;

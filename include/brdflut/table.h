@@ -78,15 +78,55 @@ enum class PixelType { half, float32 };
 std::string_view to_string(PixelType p);
 PixelType pixel_type_from_string(std::string_view s);  // throws brdflut::Error
 
-// How a value is stored in a file: as a float pixel type, or (16-bit PNG) as
-// a 16-bit unsigned normalised integer round(v * 65535) read back as q / 65535.
-enum class Storage { half, float32, unorm16 };
+// How a value is stored in a file: as a float pixel type, or as integers.
+// The integer encodings round to nearest (ties away from zero), as D3D and
+// Vulkan specify for the conversion of a float to UNORM, computed in double:
+//   unorm8, unorm16  q = round(v * (2^bits - 1)), read as q / (2^bits - 1);
+//                    values in [0, 1];
+//   rgb10a2          R10G10B10A2 UNORM: R, G, B as 10-bit q = round(v * 1023)
+//                    (bits 0-9, 10-19, 20-29 of a 32-bit word), A = 3 (1.0);
+//                    tables of 1 to 3 channels, values in [0, 1];
+//   rgbd             Babylon.js's RGBD in RGBA8 (its toRGBD/fromRGBD): with m
+//                    the largest of the texel's values (at least 1e-7),
+//                    a = min(floor(max(255 / m, 1)), 255), q = round(255 *
+//                    (v * a / 255)^(1 / 2.2)) in R, G, B and a in A; read as
+//                    v = (q / 255)^2.2 / (a / 255). Tables of 1 to 3
+//                    channels, values in [0, 255].
+// Values outside an encoding's range are refused, never clamped.
+enum class Storage { half, float32, unorm16, unorm8, rgb10a2, rgbd };
 Storage storage_of(PixelType p);
-std::string_view to_string(Storage s);  // "half", "float", "unorm16"
+std::string_view to_string(Storage s);  // "half", "float", "unorm16", "unorm8", "rgb10a2", "rgbd"
+// The names of to_string; throws brdflut::Error naming the text and the allowed names.
+Storage storage_from_string(std::string_view s);
+std::string storage_names();  // "half, float, unorm16, unorm8, rgb10a2, rgbd"
+bool is_integer(Storage s);
+int max_channels(Storage s);  // 4, or 3 for rgb10a2 and rgbd
+// The values an integer encoding holds ([0, 1], or [0, 255] for rgbd).
+double storage_min(Storage s);
+double storage_max(Storage s);
+// How a stored integer reads back as a value (recorded in the metadata as
+// `decode`); empty for the float types.
+std::string_view decode_rule(Storage s);
 
-// Rounds a value to the storage type and back.
+// An integer encoding of one texel: `n` values (1 to max_channels(s)) to the
+// four stored integers q (unused colour channels 0, A = 1.0 for unorm and
+// rgb10a2, the divisor for rgbd); values must be in range.
+void encode_texel(Storage s, const double* v, int n, std::uint32_t q[4]);
+// The values of the stored integers: 4 for unorm and rgb10a2 (A included),
+// 3 for rgbd (infinite when its A is 0).
+int decoded_channels(Storage s);
+void decode_texel(Storage s, const std::uint32_t q[4], double* v);
+// The spacing of the encoding's values around stored channel c of a texel:
+// 1 / (2^bits - 1) for unorm; for rgbd the gap to the next code above (the
+// larger of the two, the decode being convex), so that a value rounded to
+// nearest lies within half a step of its code.
+double encoding_step(Storage s, const std::uint32_t q[4], int c);
+
+// Rounds a value to the storage type and back (an rgbd value as alone in its
+// texel); round_texel rounds a texel of n values together.
 double round_to_storage(double v, PixelType p);
 double round_to_storage(double v, Storage s);
+void round_texel(Storage s, const double* v, int n, double* out);
 
 // Largest estimated absolute error of any stored value: integration error
 // plus the rounding of each value to the storage type.

@@ -33,6 +33,13 @@ void write_png_rgb8(const std::string& path, int width, int height,
 void write_png16(const std::string& path, int width, int height, int channels,
                  const std::vector<double>& values_0_1, const PngText& text = {});
 
+// An 8- or 16-bit image of integer samples (`bits` 8 or 16), channels as
+// write_png16, no colour-space chunk. Throws brdflut::Error for inconsistent
+// sizes or a sample that does not fit, RuntimeError when the file cannot be
+// written.
+void write_png_samples(const std::string& path, int width, int height, int channels, int bits,
+                       const std::vector<std::uint16_t>& samples, const PngText& text = {});
+
 // The 16-bit sample stored for a value v in [0, 1]: round(v * 65535).
 std::uint16_t png16_sample(double v);
 

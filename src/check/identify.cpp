@@ -524,18 +524,11 @@ std::string compare_arguments(const LutDescription& d, const ExrImage& img) {
     return s.str();
 }
 
-IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
-    if (opt.top < 1 || opt.top > 50)
-        throw Error("--top " + std::to_string(opt.top) + " is out of range; allowed: 1 to 50");
-    if (opt.threads < 0)
-        throw Error("--threads " + std::to_string(opt.threads) + " is out of range; allowed: 0 (all) or more");
-    const int ndim = img.height == 1 ? 1 : 2;
-    const int nf = static_cast<int>(img.channel_names.size());
-    const int counts[2] = {img.width, img.height};
-    IdentifyReport report;
+namespace {
 
-    // Tables with the file's number of axes, each with its option values,
-    // tabulated at draft quality on dense end-point grids.
+// Tables with `ndim` axes, each with its option values, tabulated at draft
+// quality on dense end-point grids.
+std::vector<Variant> tabulate_variants(int ndim, int threads) {
     std::vector<Variant> variants;
     for (const TableDefinition& def : catalogue()) {
         if (static_cast<int>(def.axes.size()) != ndim || !def.searched_by_identify) continue;
@@ -557,7 +550,7 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
     }
     if (variants.empty())
         throw RuntimeError("no catalogue table has " + std::to_string(ndim) + " axis(es) like the file");
-    parallel_for_index(variants.size(), opt.threads, [&](std::size_t i) {
+    parallel_for_index(variants.size(), threads, [&](std::size_t i) {
         Variant& v = variants[i];
         TableSettings s = default_settings(*v.def);
         s.params = v.params;
@@ -572,6 +565,14 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
             v.values.clear();
         }
     });
+    return variants;
+}
+
+IdentifyReport identify_shape(const ExrImage& img, const IdentifyOptions& opt, const std::vector<Variant>& variants) {
+    const int ndim = img.height == 1 ? 1 : 2;
+    const int nf = static_cast<int>(img.channel_names.size());
+    const int counts[2] = {img.width, img.height};
+    IdentifyReport report;
     report.tables = variants.size();
 
     // Axis candidates per (table, definition axis, texel count).
@@ -900,6 +901,68 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
                          const std::size_t xc = catalogue_index(x.description.def), yc = catalogue_index(y.description.def);
                          return std::tie(xm, xr, x.cost, xc) < std::tie(ym, yr, y.cost, yc);
                      });
+    return report;
+}
+
+bool explanation_less(const Explanation& x, const Explanation& y) {
+    const double xm = rounded(x.max_error), ym = rounded(y.max_error);
+    const double xr = rounded(x.rms_error), yr = rounded(y.rms_error);
+    const std::size_t xc = catalogue_index(x.description.def), yc = catalogue_index(y.description.def);
+    return std::tie(xm, xr, x.cost, xc) < std::tie(ym, yr, y.cost, yc);
+}
+
+// The 2-D shapes W x H (both at least kMinFactor) of a flat array of n texels.
+constexpr int kMinFactor = 4;
+std::vector<std::pair<int, int>> factorizations(int n) {
+    std::vector<std::pair<int, int>> out;
+    for (int w = kMinFactor; w <= n / kMinFactor; ++w)
+        if (n % w == 0) out.emplace_back(w, n / w);
+    return out;
+}
+
+}  // namespace
+
+IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
+    if (opt.top < 1 || opt.top > 50)
+        throw Error("--top " + std::to_string(opt.top) + " is out of range; allowed: 1 to 50");
+    if (opt.threads < 0)
+        throw Error("--threads " + std::to_string(opt.threads) + " is out of range; allowed: 0 (all) or more");
+    const std::vector<std::pair<int, int>> shapes = is_flat(img) ? factorizations(img.width) : std::vector<std::pair<int, int>>{};
+    const int ndim = img.height == 1 ? 1 : 2;
+    std::vector<Variant> variants;
+    try {
+        variants = tabulate_variants(ndim, opt.threads);
+    } catch (const RuntimeError&) {
+        if (shapes.empty()) throw;
+    }
+    IdentifyReport report = variants.empty() ? IdentifyReport{} : identify_shape(img, opt, variants);
+    if (shapes.empty()) return report;
+    // A flat array: also each factorization of its length as a 2-D table.
+    const std::vector<Variant> variants2 = tabulate_variants(2, opt.threads);
+    for (const auto& [w, h] : shapes) {
+        ExrImage shaped = img;
+        shaped.width = w;
+        shaped.height = h;
+        IdentifyReport r = identify_shape(shaped, opt, variants2);
+        report.tables += r.tables;
+        report.coarse_candidates += r.coarse_candidates;
+        report.refined_candidates += r.refined_candidates;
+        for (Explanation& e : r.explanations) {
+            // compare gives a flat array the table's default counts: name others.
+            const auto& axes = e.description.settings.axes;
+            const auto& def = default_settings(*e.description.def).axes;
+            bool own = true;
+            for (std::size_t i = 0; i < axes.size(); ++i)
+                for (const Axis& d : def)
+                    if (d.name == axes[i].name && d.count != axes[i].count) own = false;
+            if (!own) e.compare_arguments += " --size " + std::to_string(w) + "x" + std::to_string(h);
+            e.flat_shape = std::to_string(w) + "x" + std::to_string(h);
+            report.explanations.push_back(std::move(e));
+        }
+    }
+    std::stable_sort(report.explanations.begin(), report.explanations.end(), explanation_less);
+    if (report.explanations.size() > static_cast<std::size_t>(opt.top))
+        report.explanations.resize(static_cast<std::size_t>(opt.top));
     return report;
 }
 

@@ -88,6 +88,36 @@ void check_fits(const ExrImage& img, const LutDescription& d, const std::string&
                            " channel(s) but the description needs " + std::to_string(need));
 }
 
+bool is_flat(const ExrImage& img) { return img.height == 1 && img.depth == 1; }
+
+void reshape_flat(ExrImage& img, const std::vector<Axis>& axes, int table_channels, const std::string& path) {
+    const long long numbers = static_cast<long long>(img.pixels.size());
+    long long texels = 1;
+    std::string shape;
+    for (const Axis& a : axes) {
+        texels *= a.count;
+        if (!shape.empty()) shape += 'x';
+        shape += std::to_string(a.count);
+    }
+    const long long file_channels = static_cast<long long>(img.channel_names.size());
+    long long channels = file_channels;
+    if (numbers != texels * channels) {
+        if (file_channels == 1 && numbers == texels * table_channels) channels = table_channels;
+        else
+            throw RuntimeError("'" + path + "' is a flat array of " + std::to_string(numbers) +
+                               " numbers; the table's layout is " + shape + " texels of " +
+                               std::to_string(table_channels) + " channel(s), which needs " +
+                               std::to_string(texels) + " (one channel) or " +
+                               std::to_string(texels * table_channels) +
+                               "; give the file's shape with --shape or the layout's counts with --size");
+    }
+    static const char* kNames[4] = {"R", "G", "B", "A"};
+    img.width = axes[0].count;
+    img.depth = axes.size() > 2 ? axes[2].count : 1;
+    img.height = static_cast<int>(texels / axes[0].count);
+    img.channel_names.assign(kNames, kNames + channels);
+}
+
 Tolerance parse_tolerance(const std::string& s) {
     Tolerance t;
     const bool relative = !s.empty() && s.back() == '%';
@@ -109,8 +139,10 @@ Tolerance parse_tolerance(const std::string& s) {
 }
 
 double storage_step(const ExrImage& img, double v) {
-    if (img.unorm16) return 1.0 / 65535.0;
-    if (img.unorm8) return 1.0 / 255.0;
+    if (is_integer(img.storage)) {
+        const std::uint32_t q[4] = {0, 0, 0, 0};
+        return encoding_step(img.storage, q, 0);
+    }
     if (img.printed_step > 0) return img.printed_step;
     const double a = std::abs(v);
     // The spacing of the float type around v (the smallest normal's below it).
@@ -120,9 +152,13 @@ double storage_step(const ExrImage& img, double v) {
     return std::ldexp(1.0, e - mantissa);
 }
 
+double storage_step(const ExrImage& img, std::size_t index, double v) {
+    return index < img.steps.size() ? img.steps[index] : storage_step(img, v);
+}
+
 Tolerance default_tolerance(const ExrImage& img) {
     Tolerance t;
-    if (img.has_metadata && img.metadata.is_object() && img.metadata.contains("error_bound") &&
+    if (!is_integer(img.storage) && img.has_metadata && img.metadata.is_object() && img.metadata.contains("error_bound") &&
         img.metadata["error_bound"].is_number()) {
         t.abs = img.metadata["error_bound"].get<double>();
         t.source = "the file's error_bound";
@@ -132,7 +168,7 @@ Tolerance default_tolerance(const ExrImage& img) {
     t.source = img.printed_step > 0
                    ? "one unit of the last printed digit of the file's numbers"
                    : "one storage step of the file's " +
-                         std::string(img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : std::string(to_string(img.pixel))) +
+                         std::string(img.stored_as()) +
                          " values";
     return t;
 }
@@ -171,7 +207,7 @@ CompareReport compare_values(const ExrImage& img, const Table& exact, std::size_
             sum_sq[c] += std::isfinite(err) ? err * err : HUGE_VAL;
             rep.max_error_map[k] = std::max(rep.max_error_map[k], a);
             const double allowed = tolerance.abs + tolerance.rel * std::abs(want) +
-                                   tolerance.steps * storage_step(img, want) + exact.errors[k * nc + c];
+                                   tolerance.steps * storage_step(img, k * nfile + c, want) + exact.errors[k * nc + c];
             const bool fails = !(a <= allowed);
             if (fails) ++rep.failed_values;
             // Keep only what can still be among the worst (bounded memory).

@@ -61,7 +61,10 @@ Described describe(const DescribeArgs& a) {
     } else {
         const TableDefinition& def = find_table(a.as);
         TableArgs t = a.table;
-        if (t.size.empty()) {
+        // A flat array (a source array of one dimension, given no --shape)
+        // takes its shape from the table's layout.
+        const bool flat = def.axes.size() >= 2 && is_flat(d.image) && a.read.shape.empty();
+        if (t.size.empty() && !flat) {
             // Default grid: the image's own size.
             if (def.axes.size() == 1) {
                 if (d.image.height != 1)
@@ -76,6 +79,7 @@ Described describe(const DescribeArgs& a) {
         d.lut.def = &def;
         d.lut.settings = settings_for(def, t, used);
         check_all_used(t, used);
+        if (flat) reshape_flat(d.image, d.lut.settings.axes, static_cast<int>(def.channels.size()), a.file);
         // Without --channels, the file's first channels hold the table's.
         if (d.lut.settings.channel_map.empty() && d.image.channel_names.size() < def.channels.size())
             for (std::size_t c = 0; c < d.image.channel_names.size(); ++c)
@@ -223,7 +227,6 @@ ReadOptions read_options(const ReadArgs& a) {
 
 int run_inspect(const std::string& file, const ReadArgs& read, bool json) {
     const ExrImage img = read_table_image(file, read_options(read));
-    const char* pixel = img.unorm16 ? "unorm16" : img.unorm8 ? "unorm8" : nullptr;
     const std::vector<ChannelStats> stats = channel_stats(img);
     if (json) {
         nlohmann::json j;
@@ -231,7 +234,7 @@ int run_inspect(const std::string& file, const ReadArgs& read, bool json) {
         j["width"] = img.width;
         j["height"] = img.height;
         j["depth"] = img.depth;
-        j["pixel"] = pixel ? std::string(pixel) : std::string(to_string(img.pixel));
+        j["pixel"] = img.stored_as();
         j["metadata"] = img.has_metadata ? img.metadata : nlohmann::json(nullptr);
         nlohmann::json ch = nlohmann::json::array();
         for (const auto& s : stats)
@@ -244,7 +247,7 @@ int run_inspect(const std::string& file, const ReadArgs& read, bool json) {
                                                    std::to_string(img.height / img.depth) + " rows)"
                                              : std::string();
     std::printf("file:   %s\nsize:   %dx%d%s, %zu channel(s), %s\n", file.c_str(), img.width, img.height,
-                slices.c_str(), img.channel_names.size(), pixel ? pixel : std::string(to_string(img.pixel)).c_str());
+                slices.c_str(), img.channel_names.size(), std::string(img.stored_as()).c_str());
     std::printf("\n%-8s %-14s %-14s %-14s %s\n", "channel", "min", "max", "mean", "non-finite");
     for (const auto& s : stats)
         std::printf("%-8s %-14.7g %-14.7g %-14.7g %lld\n", s.channel.c_str(), s.min, s.max, s.mean, s.non_finite);

@@ -28,7 +28,8 @@ struct GenerateArgs {
     bool all = false;
     std::string output = ".";
     std::string pixel = "float";
-    std::string format = "exr";  // exr, cpp, png16, dds, ktx2 (brdflut/formats.h)
+    std::string format = "exr";  // exr, cpp, png16, png, dds, ktx2 (brdflut/formats.h)
+    std::string encoding;        // --encoding: a storage type (brdflut/table.h); empty: from --pixel and --format
     std::vector<std::string> shaders;  // --shader glsl|hlsl (repeatable): lookup functions beside each table
     bool pixel_given = false;  // --pixel on the command line (else a preset's own)
     std::string preset;        // --preset NAME
@@ -46,7 +47,7 @@ struct VerifyArgs {
 int run_verify(const VerifyArgs& a);
 
 // How a file that is not brdflut's own is read: --array NAME (an array in a
-// source file), --shape WxH[xD][:C], --decode linear|srgb (formats.h).
+// source file), --shape WxH[xD][:C], --decode linear|srgb|rgbd (formats.h).
 struct ReadArgs {
     std::string array, shape, decode;
 };

@@ -105,12 +105,16 @@ int run_generate(const GenerateArgs& a) {
         for (const auto& id : a.ids) defs.push_back(&find_table(id));
     }
     const Format format = format_from_string(a.format);
-    if (format == Format::png16 && pixel == PixelType::half) {
-        if (a.pixel_given)
-            throw Error("--pixel half does not apply to --format png16, which stores 16-bit integers round(v * 65535)");
-        pixel = PixelType::float32;  // a preset's half pixels: png16 has its own 16-bit storage
-    }
-    const Storage storage = storage_for(format, pixel);
+    if (format == Format::png16 && pixel == PixelType::half && a.pixel_given && a.encoding.empty())
+        throw Error("--pixel half does not apply to --format png16, which stores 16-bit integers round(v * 65535)");
+    if (!a.encoding.empty() && a.pixel_given) throw Error("give --pixel or --encoding, not both");
+    // A preset's half pixels in a format without half: the format's own storage.
+    const Storage storage = a.encoding.empty() ? storage_for(format, pixel) : storage_from_string(a.encoding);
+    check_format_holds(format, storage);
+    if (storage == Storage::rgbd && !a.shaders.empty())
+        throw Error("--shader does not apply to --encoding rgbd: the lookup functions read linear values, and rgbd "
+                    "needs its decode (fromRGBD) after filtering; allowed with --shader: half, float, unorm16, "
+                    "unorm8, rgb10a2");
     std::vector<ShaderLanguage> shaders;
     for (const std::string& s : a.shaders) {
         try {
@@ -169,7 +173,7 @@ int run_generate(const GenerateArgs& a) {
         const Table& table = tables[i];
         const std::string path =
             (std::filesystem::path(a.output) / (table.id + "." + file_extension(format))).string();
-        write_table(path, table, pixel, format);
+        write_table(path, table, storage, format);
         for (const ShaderLanguage lang : shaders) {
             const std::string shader_path =
                 (std::filesystem::path(a.output) / (table.id + "." + shader_extension(lang))).string();

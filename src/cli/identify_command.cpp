@@ -76,6 +76,7 @@ int run_identify(const IdentifyArgs& a) {
                             {"tolerance_source", e.tolerance.source},
                             {"padding", e.padding},
                             {"findings", e.findings},
+                            {"flat_shape", e.flat_shape},
                             {"compare", "brdflut compare " + file + " " + e.compare_arguments}});
         }
         j["explanations"] = list;
@@ -90,6 +91,7 @@ int run_identify(const IdentifyArgs& a) {
         std::printf("\n#%d %s: max |error| %s, rms %s, %s\n", ++rank, e.description.def->id.c_str(),
                     sci(e.max_error).c_str(), sci(e.rms_error).c_str(),
                     e.pass ? "passes compare" : "fails compare");
+        if (!e.flat_shape.empty()) std::printf("   the flat array read as %s\n", e.flat_shape.c_str());
         const auto& axes = e.description.settings.axes;
         for (std::size_t i = 0; i < axes.size(); ++i)
             std::printf("   %s %s\n", i == 0 ? "x:" : "y:", axis_text(axes[i]).c_str());

@@ -32,8 +32,9 @@ void add_read_options(CLI::App& app, ReadArgs& r) {
     app.add_option("--shape", r.shape,
                    "Shape of a source array or .npy data: W, WxH or WxHxD, optionally :C channels (e.g. 32x32, 64x64:2)");
     app.add_option("--decode", r.decode,
-                   "How integer samples become numbers: linear (q/255, q/65535) or srgb (then the sRGB EOTF); "
-                   "required for a PNG without brdflut metadata");
+                   "How integer samples become numbers: linear (q/255, q/65535), srgb (then the sRGB EOTF) or rgbd "
+                   "(8-bit RGBA as Babylon.js's RGBD: (q/255)^2.2 / (a/255)); required for a PNG without brdflut "
+                   "metadata");
 }
 
 void add_describe_options(CLI::App& app, DescribeArgs& d) {
@@ -102,8 +103,12 @@ int main(int argc, char** argv) {
     gen->add_option("-o,--output", g.output, "Output folder, created if missing")->capture_default_str();
     gen->add_option("--pixel", g.pixel, "Stored pixel type: half or float")->capture_default_str();
     gen->add_option("--format", g.format,
-                    "File format: exr, cpp (C++17 header), png16 (values in [0, 1] only), dds or ktx2")
+                    "File format: exr, cpp (C++17 header), png16 (values in [0, 1] only), png (8- or 16-bit), dds or ktx2")
         ->capture_default_str();
+    gen->add_option("--encoding", g.encoding,
+                    "How values are stored, instead of --pixel: half, float, unorm16, unorm8, rgb10a2 (dds, ktx2) or "
+                    "rgbd (Babylon.js RGBD in RGBA8); integer encodings round to nearest and refuse values out of "
+                    "range");
     gen->add_option("--shader", g.shaders,
                     "Also write a lookup function <id>.glsl or <id>.hlsl beside each table (glsl or hlsl; repeatable)");
     gen->add_option("--threads", g.threads, "Worker threads; 0 uses every core")->capture_default_str();

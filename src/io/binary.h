@@ -34,11 +34,6 @@ private:
     std::vector<std::uint8_t> bytes_;
 };
 
-// The table's values as stored texels: `stored_channels` (>= the table's)
-// per texel, an extra fourth channel being 1; each a little-endian IEEE half
-// (2 bytes) or float (4 bytes); texels in the table's order (row 0 first).
-std::vector<std::uint8_t> pack_texels(const Table& t, PixelType pixel, int stored_channels);
-
 // Writes the bytes to `path` atomically (AtomicFile); RuntimeError on failure.
 void write_file_atomically(const std::string& path, std::string_view bytes);
 inline void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {

@@ -11,6 +11,7 @@
 
 #include "brdflut/error.h"
 #include "io/binary.h"
+#include "io/gpu_formats.h"
 #include "io/table_checks.h"
 #include "io/table_writers.h"
 
@@ -31,16 +32,6 @@ constexpr std::uint32_t kTexture2D = 3, kTexture3D = 4;
 // DDS_HEADER_DXT10.miscFlags2: alpha mode
 constexpr std::uint32_t DDS_ALPHA_MODE_UNKNOWN = 0, DDS_ALPHA_MODE_OPAQUE = 3, DDS_ALPHA_MODE_CUSTOM = 4;
 
-// DXGI_FORMAT values (dxgiformat.h) by stored channel count 1, 2, 4.
-std::uint32_t dxgi_format(PixelType pixel, int channels) {
-    const bool half = pixel == PixelType::half;
-    switch (channels) {
-        case 1: return half ? 54u : 41u;   // R16_FLOAT : R32_FLOAT
-        case 2: return half ? 34u : 16u;   // R16G16_FLOAT : R32G32_FLOAT
-        default: return half ? 10u : 2u;   // R16G16B16A16_FLOAT : R32G32B32A32_FLOAT
-    }
-}
-
 constexpr std::uint32_t fourcc(char a, char b, char c, char d) {
     return static_cast<std::uint32_t>(static_cast<unsigned char>(a)) |
            static_cast<std::uint32_t>(static_cast<unsigned char>(b)) << 8 |
@@ -50,15 +41,16 @@ constexpr std::uint32_t fourcc(char a, char b, char c, char d) {
 
 }  // namespace
 
-void write_dds(const std::string& path, const Table& table, PixelType pixel) {
+void write_dds(const std::string& path, const Table& table, Storage storage) {
     check_shape(table);
-    check_storable(table, storage_of(pixel));
-    const int channels = gpu_stored_channels(table.channel_count());
+    check_storable(table, storage);
+    const GpuFormat& format = gpu_format(storage, table.channel_count());
+    const int channels = format.channels;
     const std::uint32_t width = static_cast<std::uint32_t>(table.width());
     const bool volume = table.axes.size() == 3;
     const std::uint32_t depth = volume ? static_cast<std::uint32_t>(table.axes[2].count) : 0u;
     const std::uint32_t height = static_cast<std::uint32_t>(volume ? table.axes[1].count : table.height());
-    const std::uint32_t texel_bytes = static_cast<std::uint32_t>(channels) * (pixel == PixelType::half ? 2u : 4u);
+    const std::uint32_t texel_bytes = static_cast<std::uint32_t>(format.texel_bytes());
 
     ByteWriter out;
     out.u32(fourcc('D', 'D', 'S', ' '));
@@ -81,7 +73,7 @@ void write_dds(const std::string& path, const Table& table, PixelType pixel) {
     out.u32(volume ? DDSCAPS2_VOLUME : 0u);                      // dwCaps2
     out.zeros(3 * 4);                                            // dwCaps3, dwCaps4, dwReserved2
     // DDS_HEADER_DXT10
-    out.u32(dxgi_format(pixel, channels));
+    out.u32(format.dxgi);
     // A 2-D texture also for one-axis tables (height 1): every loader takes it.
     out.u32(volume ? kTexture3D : kTexture2D);
     out.u32(0);           // miscFlag
@@ -89,7 +81,7 @@ void write_dds(const std::string& path, const Table& table, PixelType pixel) {
     // A is padding (= 1) for 3-channel tables, data for 4-channel ones.
     out.u32(table.channel_count() == 3 ? DDS_ALPHA_MODE_OPAQUE
                                        : (channels == 4 ? DDS_ALPHA_MODE_CUSTOM : DDS_ALPHA_MODE_UNKNOWN));
-    out.raw(pack_texels(table, pixel, channels));
+    out.raw(pack_texels(table, format));
     write_file_atomically(path, out.bytes());
 }
 

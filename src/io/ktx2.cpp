@@ -17,38 +17,34 @@
 #include "brdflut/error.h"
 #include "brdflut/version.h"
 #include "io/binary.h"
+#include "io/gpu_formats.h"
 #include "io/table_checks.h"
 #include "io/table_writers.h"
 
 namespace brdflut {
 namespace {
 
-// VkFormat values (Vulkan specification, "Formats") by stored channel count.
-std::uint32_t vk_format(PixelType pixel, int channels) {
-    const bool half = pixel == PixelType::half;
-    switch (channels) {
-        case 1: return half ? 76u : 100u;  // R16_SFLOAT : R32_SFLOAT
-        case 2: return half ? 83u : 103u;  // R16G16_SFLOAT : R32G32_SFLOAT
-        default: return half ? 97u : 109u; // R16G16B16A16_SFLOAT : R32G32B32A32_SFLOAT
-    }
-}
-
 // Khronos Data Format Specification 1.3, "Khronos Basic Data Format
-// Descriptor Block" (section 5) for an unpacked little-endian SFLOAT format:
-// one sample per channel. The KTX spec ("Data Format Descriptor",
-// "Restrictions") requires the samples to match vkFormat.
-void write_dfd(ByteWriter& out, int channels, int component_bytes) {
+// Descriptor Block" (section 5) for a little-endian SFLOAT or UNORM format:
+// one sample per channel (R10G10B10A2: four samples of one 32-bit word).
+// The KTX spec ("Data Format Descriptor", "Restrictions") requires the
+// samples to match vkFormat.
+void write_dfd(ByteWriter& out, const GpuFormat& format) {
     constexpr std::uint32_t KHR_DF_VENDORID_KHRONOS = 0, KHR_DF_KHR_DESCRIPTORTYPE_BASICFORMAT = 0;
     constexpr std::uint32_t KHR_DF_VERSIONNUMBER_1_3 = 2;
     constexpr std::uint32_t KHR_DF_MODEL_RGBSDA = 1;
     // Table data has no colour primaries; three.js and others read
     // UNSPECIFIED + LINEAR as "no colour space", which is what a LUT is.
+    // (rgbd's gamma is not a transfer function the DFD can name; the
+    // metadata's `decode` gives it.)
     constexpr std::uint32_t KHR_DF_PRIMARIES_UNSPECIFIED = 0, KHR_DF_TRANSFER_LINEAR = 1;
     constexpr std::uint32_t KHR_DF_FLAG_ALPHA_STRAIGHT = 0;
     constexpr std::uint32_t KHR_DF_SAMPLE_DATATYPE_FLOAT = 0x80, KHR_DF_SAMPLE_DATATYPE_SIGNED = 0x40;
     constexpr std::uint32_t kChannelId[4] = {0, 1, 2, 15};  // RGBSDA red, green, blue, alpha
     constexpr std::uint32_t kMinusOne = 0xBF800000u, kPlusOne = 0x3F800000u;  // -1.0f, 1.0f
 
+    const int channels = format.channels;
+    const bool is_float = !is_integer(format.storage);
     const std::uint32_t block_size = 24 + 16 * static_cast<std::uint32_t>(channels);
     out.u32(4 + block_size);  // dfdTotalSize
     out.u32(KHR_DF_VENDORID_KHRONOS | KHR_DF_KHR_DESCRIPTORTYPE_BASICFORMAT << 17);
@@ -56,18 +52,22 @@ void write_dfd(ByteWriter& out, int channels, int component_bytes) {
     out.u32(KHR_DF_MODEL_RGBSDA | KHR_DF_PRIMARIES_UNSPECIFIED << 8 | KHR_DF_TRANSFER_LINEAR << 16 |
             KHR_DF_FLAG_ALPHA_STRAIGHT << 24);
     out.u32(0);  // texelBlockDimension0..3 = 0 (1x1x1x1)
-    out.u32(static_cast<std::uint32_t>(channels * component_bytes));  // bytesPlane0; planes 1..3 = 0
-    out.u32(0);                                                         // bytesPlane4..7 = 0
+    out.u32(static_cast<std::uint32_t>(format.texel_bytes()));  // bytesPlane0; planes 1..3 = 0
+    out.u32(0);                                                 // bytesPlane4..7 = 0
+    std::uint32_t offset = 0;
     for (int c = 0; c < channels; ++c) {
-        const std::uint32_t bits = 8 * static_cast<std::uint32_t>(component_bytes);
+        const std::uint32_t bits = format.packed ? (c == 3 ? 2u : 10u)
+                                                 : 8 * static_cast<std::uint32_t>(format.component_bytes);
         const std::uint32_t channel_type =
-            kChannelId[c] | KHR_DF_SAMPLE_DATATYPE_FLOAT | KHR_DF_SAMPLE_DATATYPE_SIGNED;
-        out.u32(bits * static_cast<std::uint32_t>(c) | (bits - 1) << 16 | channel_type << 24);
+            kChannelId[c] | (is_float ? KHR_DF_SAMPLE_DATATYPE_FLOAT | KHR_DF_SAMPLE_DATATYPE_SIGNED : 0u);
+        out.u32(offset | (bits - 1) << 16 | channel_type << 24);
+        offset += bits;
         out.u32(0);  // samplePosition0..3
         // Float samples: sampleLower/Upper are the float values for -1 and 1
-        // of a signed format (as Khronos' own dfdutils writes them).
-        out.u32(kMinusOne);
-        out.u32(kPlusOne);
+        // of a signed format (as Khronos' own dfdutils writes them); UNORM
+        // samples: 0 and the largest integer.
+        out.u32(is_float ? kMinusOne : 0u);
+        out.u32(is_float ? kPlusOne : (1u << bits) - 1u);
     }
 }
 
@@ -86,19 +86,19 @@ void write_key_values(ByteWriter& out, const std::map<std::string, std::string>&
 
 }  // namespace
 
-void write_ktx2(const std::string& path, const Table& table, PixelType pixel) {
+void write_ktx2(const std::string& path, const Table& table, Storage storage) {
     check_shape(table);
-    check_storable(table, storage_of(pixel));
-    const int channels = gpu_stored_channels(table.channel_count());
-    const int component_bytes = pixel == PixelType::half ? 2 : 4;
-    const std::uint64_t texel_bytes = static_cast<std::uint64_t>(channels * component_bytes);
-    const std::vector<std::uint8_t> texels = pack_texels(table, pixel, channels);
+    check_storable(table, storage);
+    const GpuFormat& format = gpu_format(storage, table.channel_count());
+    const std::uint64_t texel_bytes = static_cast<std::uint64_t>(format.texel_bytes());
+    const std::vector<std::uint8_t> texels = pack_texels(table, format);
 
     ByteWriter out;
     const char identifier[12] = {'\xAB', 'K', 'T', 'X', ' ', '2', '0', '\xBB', '\r', '\n', '\x1A', '\n'};
     out.raw(std::string_view(identifier, sizeof identifier));
-    out.u32(vk_format(pixel, channels));
-    out.u32(static_cast<std::uint32_t>(component_bytes));  // typeSize: bytes of one component
+    out.u32(format.vk);
+    // typeSize: bytes of one component (of the 32-bit word of a packed format)
+    out.u32(static_cast<std::uint32_t>(format.component_bytes));
     out.u32(static_cast<std::uint32_t>(table.width()));    // pixelWidth
     // pixelHeight: a 2-D texture also for one-axis tables (height 1), as the
     // dds and exr files are; pixelHeight 0 would make it a 1-D texture.
@@ -118,11 +118,11 @@ void write_ktx2(const std::string& path, const Table& table, PixelType pixel) {
     out.zeros(3 * 8);  // level index, patched below
 
     const std::size_t dfd_at = out.size();
-    write_dfd(out, channels, component_bytes);
+    write_dfd(out, format);
     const std::size_t kvd_at = out.size();
     write_key_values(out, {{"KTXorientation", "rd"},  // row 0 at the top, x to the right
                            {"KTXwriter", std::string(kName) + " " + kVersion},
-                           {"brdflut", metadata_json(table, pixel).dump()}});
+                           {"brdflut", metadata_json(table, storage).dump()}});
     const std::size_t kvd_end = out.size();
     // "mipPadding": the level starts at a multiple of lcm(texel block size, 4).
     out.align(std::lcm(static_cast<std::size_t>(texel_bytes), std::size_t{4}));

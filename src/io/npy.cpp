@@ -177,8 +177,8 @@ ExrImage read_npy(const char* data, std::size_t size, const std::string& name, c
     if (size - data_at > need)
         throw fail("the file has " + std::to_string(size - data_at - need) + " bytes after the array data");
     img.pixel = type == "f2" ? PixelType::half : PixelType::float32;
-    img.unorm8 = type == "u1";
-    img.unorm16 = type == "u2";
+    if (type == "u1") img.storage = Storage::unorm8;
+    if (type == "u2") img.storage = Storage::unorm16;
     img.pixels.resize(static_cast<std::size_t>(count));
     const unsigned char* p = u + data_at;
     for (std::size_t i = 0; i < img.pixels.size(); ++i, p += item) {

@@ -159,17 +159,41 @@ void write_png16(const std::string& path, int width, int height, int channels,
           << ") is outside [0, 1]; a 16-bit PNG holds values in [0, 1] only; nothing was written";
         throw Error(s.str());
     }
+    std::vector<std::uint16_t> samples(n);
+    for (std::size_t i = 0; i < n; ++i) samples[i] = png16_sample(values_0_1[i]);
+    write_png_samples(path, width, height, channels, 16, samples, text);
+}
+
+void write_png_samples(const std::string& path, int width, int height, int channels, int bits,
+                       const std::vector<std::uint16_t>& samples, const PngText& text) {
+    if (channels < 1 || channels > 4)
+        throw Error("write_png_samples: channels " + std::to_string(channels) + " is out of range; allowed: 1 to 4");
+    if (bits != 8 && bits != 16)
+        throw Error("write_png_samples: " + std::to_string(bits) + " bits a sample; allowed: 8, 16");
+    check_size("write_png_samples", width, height);
+    check_text("write_png_samples", text);
+    const std::size_t nc = static_cast<std::size_t>(channels), bytes_per = static_cast<std::size_t>(bits / 8);
+    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * nc;
+    if (samples.size() != n)
+        throw Error("write_png_samples: " + std::to_string(samples.size()) + " samples given for a " +
+                    std::to_string(width) + "x" + std::to_string(height) + " image with " +
+                    std::to_string(channels) + " channels; expected " + std::to_string(n));
     // PNG samples are big-endian.
-    std::vector<png_byte> bytes(n * 2);
+    std::vector<png_byte> bytes(n * bytes_per);
     for (std::size_t i = 0; i < n; ++i) {
-        const std::uint16_t q = png16_sample(values_0_1[i]);
-        bytes[2 * i] = static_cast<png_byte>(q >> 8);
-        bytes[2 * i + 1] = static_cast<png_byte>(q & 0xff);
+        const std::uint16_t q = samples[i];
+        if (bits == 16) {
+            bytes[2 * i] = static_cast<png_byte>(q >> 8);
+            bytes[2 * i + 1] = static_cast<png_byte>(q & 0xff);
+        } else {
+            if (q > 255) throw Error("write_png_samples: sample " + std::to_string(q) + " does not fit in 8 bits");
+            bytes[i] = static_cast<png_byte>(q);
+        }
     }
     static constexpr int kColorType[4] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
                                           PNG_COLOR_TYPE_RGBA};
-    write_png(path, width, height, 16, kColorType[channels - 1], false, bytes,
-              static_cast<std::size_t>(width) * nc * 2, text);
+    write_png(path, width, height, bits, kColorType[channels - 1], false, bytes,
+              static_cast<std::size_t>(width) * nc * bytes_per, text);
 }
 
 }  // namespace brdflut

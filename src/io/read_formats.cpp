@@ -14,6 +14,7 @@
 #include "brdflut/error.h"
 #include "brdflut/math.h"
 #include "brdflut/formats.h"
+#include "io/gpu_formats.h"
 #include "io/image_limits.h"
 #include "io/input_file.h"
 #include "io/readers.h"
@@ -37,28 +38,18 @@ struct Bytes {
     std::uint64_t u64(std::size_t at) const { return le(at, 8); }
 };
 
-// Texels of `channels` little-endian half or float components from `at`.
-void read_texels(const Bytes& f, std::uint64_t at, ExrImage& img, int channels, PixelType pixel) {
-    const std::size_t n = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height) *
-                          static_cast<std::size_t>(channels);
-    const std::size_t comp = pixel == PixelType::half ? 2 : 4;
-    if (at > f.b.size() || n * comp > f.b.size() - at) f.fail("the texel data is truncated");
-    img.pixel = pixel;
+// Texels of format f from `at`.
+void read_texels(const Bytes& f, std::uint64_t at, ExrImage& img, const GpuFormat& format) {
+    const std::size_t texels = static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height);
+    const std::size_t bytes = static_cast<std::size_t>(format.texel_bytes());
+    if (at > f.b.size() || texels * bytes > f.b.size() - at) f.fail("the texel data is truncated");
+    img.pixel = format.storage == Storage::half ? PixelType::half : PixelType::float32;
+    // An rgbd texture reads as its RGBA8 bytes until decoded (its metadata or --decode rgbd).
+    img.storage = format.storage == Storage::rgbd ? Storage::unorm8 : format.storage;
+    const int channels = format.packed ? decoded_channels(format.storage) : format.channels;
     img.channel_names.assign(kChannelNames, kChannelNames + channels);
-    img.pixels.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint64_t bits = f.le(static_cast<std::size_t>(at) + i * comp, static_cast<int>(comp));
-        if (pixel == PixelType::half) {
-            Imath::half h;
-            h.setBits(static_cast<unsigned short>(bits));
-            img.pixels[i] = static_cast<double>(static_cast<float>(h));
-        } else {
-            const std::uint32_t b32 = static_cast<std::uint32_t>(bits);
-            float v;
-            std::memcpy(&v, &b32, sizeof v);
-            img.pixels[i] = static_cast<double>(v);
-        }
-    }
+    img.pixels.reserve(texels * static_cast<std::size_t>(channels));
+    unpack_texels(reinterpret_cast<const unsigned char*>(f.b.data()) + at, texels, format, img.pixels);
 }
 
 // A w x h texture of `depth` slices, stacked as rows.
@@ -102,35 +93,18 @@ ExrImage read_dds(const Bytes& f) {
         if ((f.u32(8) & DDSD_DEPTH) == 0) f.fail("a 3-D texture without DDSD_DEPTH in dwFlags");
         depth = f.u32(24);  // dwDepth
     }
-    int channels = 0;
-    PixelType pixel = PixelType::float32;
-    switch (f.u32(128)) {
-        case 54: channels = 1; pixel = PixelType::half; break;
-        case 34: channels = 2; pixel = PixelType::half; break;
-        case 10: channels = 4; pixel = PixelType::half; break;
-        case 41: channels = 1; break;
-        case 16: channels = 2; break;
-        case 2: channels = 4; break;
-        default: f.fail("DXGI format " + std::to_string(f.u32(128)) + " is not one brdflut writes");
-    }
-    set_size(f, img, f.u32(16), f.u32(12), depth, channels);
-    read_texels(f, 148, img, channels, pixel);
+    const GpuFormat* format = gpu_format_by_dxgi(f.u32(128));
+    if (format == nullptr) f.fail("DXGI format " + std::to_string(f.u32(128)) + " is not one brdflut writes");
+    set_size(f, img, f.u32(16), f.u32(12), depth, format->channels);
+    read_texels(f, 148, img, *format);
     return img;
 }
 
 ExrImage read_ktx2(const Bytes& f) {
     ExrImage img;
-    int channels = 0;
-    PixelType pixel = PixelType::float32;
-    switch (f.u32(12)) {
-        case 76: channels = 1; pixel = PixelType::half; break;
-        case 83: channels = 2; pixel = PixelType::half; break;
-        case 97: channels = 4; pixel = PixelType::half; break;
-        case 100: channels = 1; break;
-        case 103: channels = 2; break;
-        case 109: channels = 4; break;
-        default: f.fail("vkFormat " + std::to_string(f.u32(12)) + " is not one brdflut writes");
-    }
+    const GpuFormat* format = gpu_format_by_vk(f.u32(12));
+    if (format == nullptr) f.fail("vkFormat " + std::to_string(f.u32(12)) + " is not one brdflut writes");
+    const int channels = format->channels;
     if (f.u32(32) != 0 || f.u32(36) != 1 || f.u32(44) != 0)
         f.fail("only single 2-D or 3-D textures without supercompression are read");
     const std::uint32_t pixel_depth = f.u32(28);
@@ -150,7 +124,7 @@ ExrImage read_ktx2(const Bytes& f) {
         }
         at += 4 + (n + 3) / 4 * 4;
     }
-    read_texels(f, f.u64(80), img, channels, pixel);
+    read_texels(f, f.u64(80), img, *format);
     return img;
 }
 
@@ -245,19 +219,50 @@ ExrImage read_png(const Bytes& f, const ReadOptions& opt) {
     img.channel_names.assign(kChannelNames, kChannelNames + std::min(d.channels, 4));
     img.pixels.reserve(samples.size() / (d.bits / 8));
     if (d.bits == 16) {
-        img.unorm16 = true;
+        img.storage = Storage::unorm16;
         for (std::size_t i = 0; i + 1 < samples.size(); i += 2)
             img.pixels.push_back((samples[i] << 8 | samples[i + 1]) / 65535.0);
     } else {
-        img.unorm8 = true;
+        img.storage = Storage::unorm8;
         for (unsigned char q : samples) img.pixels.push_back(q / 255.0);
     }
     return img;
 }
 
+// Babylon.js's RGBD: 8-bit RGBA read as unorm8 to three values a texel, with
+// the spacing of the encoding around each.
+void decode_rgbd(const std::string& name, ExrImage& img) {
+    if (!img.is_unorm8() || img.channel_names.size() != 4)
+        throw RuntimeError("cannot read '" + name + "': rgbd decoding applies to 8-bit RGBA images, and this one has " +
+                           std::to_string(img.channel_names.size()) + " channel(s) of " +
+                           std::string(img.stored_as()) + " values");
+    const std::size_t texels = img.pixels.size() / 4;
+    std::vector<double> values(texels * 3), steps(texels * 3);
+    for (std::size_t k = 0; k < texels; ++k) {
+        std::uint32_t q[4];
+        for (std::size_t c = 0; c < 4; ++c) q[c] = static_cast<std::uint32_t>(std::lround(img.pixels[4 * k + c] * 255.0));
+        if (q[3] == 0)
+            throw RuntimeError("cannot read '" + name + "': rgbd texel " + std::to_string(k) +
+                               " has D = 0 in A; allowed: 1 to 255");
+        decode_texel(Storage::rgbd, q, &values[3 * k]);
+        for (int c = 0; c < 3; ++c) steps[3 * k + static_cast<std::size_t>(c)] = encoding_step(Storage::rgbd, q, c);
+    }
+    img.pixels = std::move(values);
+    img.steps = std::move(steps);
+    img.storage = Storage::rgbd;
+    img.channel_names.assign(kChannelNames, kChannelNames + 3);
+}
+
+// A brdflut file says in its metadata how it is stored: rgbd is decoded.
+bool metadata_says_rgbd(const ExrImage& img) {
+    return img.has_metadata && img.metadata.is_object() && img.metadata.contains("pixel") &&
+           img.metadata["pixel"] == "rgbd";
+}
+
 void apply_decode(const std::string& name, ExrImage& img, Decode decode) {
+    if (decode == Decode::rgbd || (decode == Decode::none && metadata_says_rgbd(img))) return decode_rgbd(name, img);
     if (decode != Decode::srgb) return;
-    if (!img.unorm8 && !img.unorm16)
+    if (!img.is_unorm8() && !img.is_unorm16())
         throw RuntimeError("cannot read '" + name +
                            "': --decode srgb applies to 8- and 16-bit integer samples (PNG, .npy u1/u2), and this "
                            "file holds floating-point samples");
@@ -321,6 +326,7 @@ std::string_view to_string(Decode d) {
     switch (d) {
         case Decode::linear: return "linear";
         case Decode::srgb: return "srgb";
+        case Decode::rgbd: return "rgbd";
         default: return "none";
     }
 }
@@ -328,7 +334,8 @@ std::string_view to_string(Decode d) {
 Decode decode_from_string(std::string_view s) {
     if (s == "linear") return Decode::linear;
     if (s == "srgb") return Decode::srgb;
-    throw Error("--decode '" + std::string(s) + "' is not a decoding; allowed: linear, srgb");
+    if (s == "rgbd") return Decode::rgbd;
+    throw Error("--decode '" + std::string(s) + "' is not a decoding; allowed: linear, srgb, rgbd");
 }
 
 ArrayShape parse_array_shape(std::string_view s) {

@@ -173,6 +173,9 @@ std::string format_name(Storage s, int channels) {
         case Storage::half: return letters + "16F (VK_FORMAT_" + (stored == 1 ? "R16" : stored == 2 ? "R16G16" : "R16G16B16A16") + "_SFLOAT)";
         case Storage::float32: return letters + "32F (VK_FORMAT_" + (stored == 1 ? "R32" : stored == 2 ? "R32G32" : "R32G32B32A32") + "_SFLOAT)";
         case Storage::unorm16: return letters + "16 UNORM (16-bit PNG)";
+        case Storage::unorm8: return letters + "8 UNORM (VK_FORMAT_" + (stored == 1 ? "R8" : stored == 2 ? "R8G8" : "R8G8B8A8") + "_UNORM)";
+        case Storage::rgb10a2: return "RGB10_A2 UNORM (VK_FORMAT_A2B10G10R10_UNORM_PACK32)";
+        case Storage::rgbd: return "RGBA8 UNORM holding RGBD (decode after filtering)";
     }
     return "";
 }

@@ -45,16 +45,22 @@ void check_shape(const Table& t) {
 }
 
 void check_storable(const Table& t, Storage s) {
+    if (t.channel_count() > max_channels(s))
+        throw Error("table '" + t.id + "' has " + std::to_string(t.channel_count()) + " channels; the encoding " +
+                    std::string(to_string(s)) + " holds 1 to " + std::to_string(max_channels(s)) +
+                    " (A is taken); nothing was written");
     for (std::size_t i = 0; i < t.values.size(); ++i) {
         const double v = t.values[i];
         if (!std::isfinite(v))
             throw RuntimeError("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
                                " is not finite; nothing was written");
-        if (s == Storage::unorm16) {
-            if (v >= 0.0 && v <= 1.0) continue;
+        if (is_integer(s)) {
+            if (v >= storage_min(s) && v <= storage_max(s)) continue;
             throw Error("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
-                        " is outside [0, 1]; a 16-bit PNG (png16) holds values in [0, 1] only, use exr, dds, "
-                        "ktx2 or cpp for this table; nothing was written");
+                        " is outside [0, " + shortest(storage_max(s)) + "]; the encoding " +
+                        std::string(to_string(s)) + " holds values in [0, " + shortest(storage_max(s)) +
+                        "] only (values are refused, not clamped), use half or float storage for this table; "
+                        "nothing was written");
         }
         if (!std::isfinite(round_to_storage(v, s)))
             throw RuntimeError("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +

@@ -20,8 +20,9 @@ void check_shape(const Table& t);
 // Refuses, naming the table, texel, channel and value:
 //  - a NaN or infinite value, or one that overflows the storage type (half:
 //    |v| > 65504 after rounding) -> brdflut::RuntimeError (a fault of the data);
-//  - for unorm16, a value outside [0, 1] -> brdflut::Error (the table cannot be
-//    stored in that format; another format can).
+//  - for an integer encoding, a value outside its range ([0, 1], rgbd
+//    [0, 255]) or more channels than it holds -> brdflut::Error (the table
+//    cannot be stored that way; another can). Values are never clamped.
 void check_storable(const Table& t, Storage s);
 
 }  // namespace brdflut

@@ -233,7 +233,9 @@ TableDefinition ltc_table(LtcTableSpec e) {
     d.channels = e.channels;
     d.options = e.options;
     d.preset = e.preset;
-    d.searched_by_identify = false;  // a fit per texel: see catalogue.h
+    // A fit per texel is not searched (catalogue.h); the norm tables hold
+    // integrals as cheap as the albedo tables, and identify searches them.
+    d.searched_by_identify = !fits(e.layout);
     const Layout layout = e.layout;
     if (is_matrix(layout)) {
         d.shader_result = "ltc_inverse";

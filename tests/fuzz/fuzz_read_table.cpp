@@ -5,9 +5,12 @@
 //
 // The first input byte picks the read options, the rest is the file:
 //   bits 0-1: decode none, linear, srgb, or (3) read as a source file with
-//             --array lut; bit 2: a given shape (4x4:1, or 2x2x2:2 with bit 3).
-// The seeds in tests/fuzz/corpus carry that byte: 0x00 for binary files,
-// 0x01 for PNGs without metadata, 0x03 for source files.
+//             --array lut; bit 2: a given shape (4x4:1, or 2x2x2:2 with bit 3);
+//             bit 4 (with bits 0-1 at 0): decode rgbd.
+// The seeds in tests/fuzz/corpus carry that byte: 0x00 for binary files
+// (the integer encodings among them: unorm8, unorm16, rgb10a2, rgbd with its
+// metadata), 0x01 for PNGs without metadata, 0x03 for source files, 0x10 for
+// an rgbd dds (which has no metadata).
 #include <cstddef>
 #include <cstdint>
 
@@ -23,7 +26,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         case 1: opt.decode = brdflut::Decode::linear; break;
         case 2: opt.decode = brdflut::Decode::srgb; break;
         case 3: opt.array = "lut"; break;
-        default: break;
+        default:
+            if (pick & 16) opt.decode = brdflut::Decode::rgbd;
+            break;
     }
     if (pick & 4) opt.shape = (pick & 8) ? brdflut::ArrayShape{2, 2, 2, 2} : brdflut::ArrayShape{4, 4, 1, 1};
     try {
