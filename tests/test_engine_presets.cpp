@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "brdflut/catalogue.h"
 #include "brdflut/error.h"
 #include "brdflut/exr.h"
@@ -346,5 +348,30 @@ TEST(SmithJointApprox, IsUnrealsVisAndItsSplitSumAgreesWithIndependentRoutes) {
         TableSettings s = default_settings(find_table(id));
         s.params["visibility"] = "smith_joint_approx";
         EXPECT_THROW(validate_settings(find_table(id), s), Error) << id;
+    }
+}
+
+// `list` (text and JSON) names each preset table's engine source and its
+// channels' expressions; core tables have neither.
+TEST(EnginePresets, ListNamesTheSourceAndTheRecipeOfEveryPresetTable) {
+    TempDir dir;
+    const auto text = run_cli("list", dir);
+    ASSERT_EQ(text.exit_code, 0);
+    EXPECT_NE(text.out.find("R: 1 - E: the energy GGX loses, 1 - integral of f cos(theta_i) dw_i = 1 - ggx_albedo.0"),
+              std::string::npos);
+    EXPECT_NE(text.out.find("source: EpicGames/UnrealEngine Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp"),
+              std::string::npos);
+    const auto json = run_cli("list --json", dir);
+    ASSERT_EQ(json.exit_code, 0);
+    const auto j = nlohmann::json::parse(json.out);
+    for (const auto& t : j.at("tables")) {
+        const bool preset = !t.at("preset").get<std::string>().empty();
+        const bool fitted = t.at("id").get<std::string>().find("ltc") != std::string::npos;
+        if (preset && !fitted) {
+            EXPECT_FALSE(t.at("engine_source").get<std::string>().empty()) << t.at("id");
+            EXPECT_EQ(t.at("recipe").size(), t.at("channels").size()) << t.at("id");
+        } else if (!preset) {
+            EXPECT_TRUE(t.at("engine_source").get<std::string>().empty()) << t.at("id");
+        }
     }
 }

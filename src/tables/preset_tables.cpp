@@ -296,7 +296,8 @@ std::vector<AxisSpec> mu_r(int mus, int rs, Placement placement) {
 
 const char* kUnrealSource =
     "EpicGames/UnrealEngine Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp (PreintegratedGF: "
-    "Vis_SmithJointApprox, m = roughness^2, 128x32 cell centres, G16R16), the same code in UE4 and UE 5.x";
+    "Vis_SmithJointApprox, m = roughness^2, 128x32 cell centres, G16R16), the same code in UE4 and UE 5.x "
+    "(read at the public mirror unicorn2022/UE5.8.0 @5d9a05c15b1f8c6d7b3354b360677ce30d688149)";
 const char* kGodotSource =
     "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/integrate_dfg.glsl "
     "@e8387d695efee663e2f427bd427792a6f0c633f0 (PR #103934)";
@@ -501,7 +502,8 @@ std::vector<PresetDeclaration> declare() {
           "OSL BSDL's MiniMicrofacetGGX energy table: 16x16, 1 - E of GGX, cos = (i/15)^2, alpha = (j/15)^2",
           PixelType::float32},
          {{"osl_bsdl_ggx", "BSDL spi::MiniMicrofacetGGX: 1 - E (height-correlated GGX, F = 1)",
-           "AcademySoftwareFoundation/OpenShadingLanguage src/libbsdl/src/genluts.cpp, "
+           "AcademySoftwareFoundation/OpenShadingLanguage @ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa "
+           "src/libbsdl/src/genluts.cpp, "
            "include/BSDL/microfacet_tools_decl.h (MiniMicrofacet, get_cosine, GGXDist)",
            {bsdl_cos(16), bsdl_roughness(16)},
            {{"1 - E: the energy GGX loses, 1 - integral of f cos(theta_i) dw_i", {{"ggx_albedo", 0, -1.0}}, 1.0}},

@@ -230,15 +230,15 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
     d.axes = entry.axes;
     for (const ChannelRecipe& c : entry.channels) d.channels.push_back(c.meaning);
     d.preset = preset;
+    d.engine_source = entry.engine_source;
+    for (const ChannelRecipe& c : entry.channels) d.channel_recipes.push_back(channel_expression(c));
     d.checks = entry.checks;
     // Until resolve_recipe_tables has read the core tables.
     d.supports_monte_carlo = true;
     nlohmann::json model = entry.model;
     model["preset"] = preset;
     model["engine_source"] = entry.engine_source;
-    nlohmann::json recipe = nlohmann::json::array();
-    for (const ChannelRecipe& c : entry.channels) recipe.push_back(channel_expression(c));
-    model["recipe"] = recipe;
+    model["recipe"] = d.channel_recipes;
     RecipeTable e = entry;
     e.checks.clear();
     d.prepare = [e, model, method](const TableSettings& s) {
