@@ -177,8 +177,9 @@ ModelOption visibility_option(std::vector<std::string> allowed) {
     return {"visibility",
             "microfacet shadowing-masking term: height_correlated Smith G2 = 1/(1 + Lambda(o) + Lambda(i)) "
             "(Heitz 2014), separable G1(o) G1(i), or schlick_smith G1(mu) = mu/(mu (1 - k) + k) with k = "
-            "alpha/2 for GGX (Karis 2013) and alpha sqrt(2/pi) for Beckmann (Schlick 1994); transmission "
-            "takes Lambda of |cos(theta_i)|",
+            "alpha/2 for GGX (Karis 2013) and alpha sqrt(2/pi) for Beckmann (Schlick 1994), or (GGX "
+            "reflection only) smith_joint_approx, Unreal's Vis_SmithJointApprox G2 = 2 mu_o mu_i / (mu_i (mu_o "
+            "(1 - a) + a) + mu_o (mu_i (1 - a) + a)) with a = alpha; transmission takes Lambda of |cos(theta_i)|",
             "height_correlated", std::move(allowed)};
 }
 

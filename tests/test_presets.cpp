@@ -3,6 +3,8 @@
 // texel's coordinates converted to the model's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -102,16 +104,20 @@ TEST(Presets, FilamentValuesAreTheCoreIntegralsAtAlphaRoughnessSquared) {
         }
 }
 
-TEST(Presets, UnrealUsesSchlickSmithAndGodotGltfUseHeightCorrelatedScaleAndBias) {
-    const Table u = small("unreal_dfg", 4), g = small("godot_dfg", 4), l = small("gltf_ggx", 4);
+TEST(Presets, KarisNotesUseSchlickSmithUnrealTheJointApproxAndGodotMobileGltfHeightCorrelated) {
+    const Table k = small("unreal_karis2013_dfg", 4), u = small("unreal_dfg", 4), g = small("godot_mobile_dfg", 4),
+                l = small("gltf_ggx", 4), b = small("bevy_dfg", 4);
     for (std::size_t texel : {0u, 5u, 10u, 15u}) {
         const double mu = (static_cast<double>(texel % 4) + 0.5) / 4, r = (static_cast<double>(texel / 4) + 0.5) / 4;
         const Estimate<2> s = ggx_split_sum(mu, r * r, Visibility::schlick_smith);
+        const Estimate<2> j = ggx_split_sum(mu, r * r, Visibility::smith_joint_approx);
         const Estimate<2> hc = ggx_split_sum(mu, r * r, Visibility::height_correlated);
         for (int c = 0; c < 2; ++c) {
-            expect_within(u, texel, c, s.value[c], s.error[c]);
+            expect_within(k, texel, c, s.value[c], s.error[c]);
+            expect_within(u, texel, c, j.value[c], j.error[c]);
             expect_within(g, texel, c, hc.value[c], hc.error[c]);
             expect_within(l, texel, c, hc.value[c], hc.error[c]);
+            expect_within(b, texel, c, hc.value[c], hc.error[c]);
         }
     }
     const Table ch = small("gltf_charlie", 3);
@@ -135,18 +141,19 @@ TEST(Presets, HdrpStoresSquaredCosineColumnsAndDiffuseMinusOneHalf) {
         }
 }
 
-TEST(Presets, CyclesSwapsTheAxesAndStoresTheGrazingLimit) {
+TEST(Presets, CyclesSwapsTheAxesAndClampsMuAndRoughnessAsItsGenerator) {
     const Table t = small("cycles_ggx_e", 5);
     for (int j = 0; j < 5; ++j)
         for (int i = 0; i < 5; ++i) {
-            const double alpha = std::pow(i / 4.0, 2), mu = j / 4.0;
+            // cycles_precompute.cpp: rough = clamp(x/(nx-1), 1e-4, 1), mu = clamp(y/(ny-1), 1e-4, 1).
+            const double rough = std::max(i / 4.0, 1e-4), mu = std::max(j / 4.0, 1e-4);
             const std::size_t texel = static_cast<std::size_t>(j * 5 + i);
-            const double v = t.at(texel, 0);
-            const Estimate<2> s = ggx_split_sum(mu, alpha, Visibility::height_correlated);
-            if (j > 0) expect_within(t, texel, 0, s.value[0] + s.value[1], s.error[0] + s.error[1]);
-            // mu = 0: the limit mu -> 0+, which is 1 for every alpha (not the 0 of the 0/0 point).
-            else EXPECT_NEAR(v, 1.0, 1e-9) << i;
+            const Estimate<2> s = ggx_split_sum(mu, rough * rough, Visibility::height_correlated);
+            expect_within(t, texel, 0, s.value[0] + s.value[1], s.error[0] + s.error[1]);
         }
+    // The first row is E at mu = 1e-4, not the limit 1 of mu -> 0: at alpha = 1
+    // it is 1 - 1e-4 ln(1 + 1e4).
+    EXPECT_NEAR(t.at(4, 0), 1.0 - 1e-4 * std::log1p(1e4), 1e-7);
     // alpha = 1: E(mu) = 1 - mu ln(1 + 1/mu).
     EXPECT_NEAR(t.at(2 * 5 + 4, 0), 1.0 - 0.5 * std::log(3.0), 1e-9);
     const Table avg = small("cycles_ggx_e_avg", 3);
@@ -238,7 +245,8 @@ TEST(Presets, EveryRecipeNamesCoreTablesTheirChannelsAndOptions) {
             ASSERT_EQ(def.channels.size(), t.channels.size()) << t.id;
             bool mc = true, identify = true;
             for (const tables::ChannelRecipe& c : t.channels)
-                for (const tables::RecipeTerm& term : c.terms) {
+                for (const auto* terms : {&c.terms, &c.den_terms})
+                for (const tables::RecipeTerm& term : *terms) {
                     const TableDefinition& core = find_table(term.table);
                     EXPECT_TRUE(core.preset.empty()) << t.id << " reads " << term.table;
                     EXPECT_GE(term.channel, 0) << t.id;
@@ -254,8 +262,9 @@ TEST(Presets, EveryRecipeNamesCoreTablesTheirChannelsAndOptions) {
             for (const auto& [name, value] : t.options) {
                 bool taken = false;
                 for (const tables::ChannelRecipe& c : t.channels)
-                    for (const tables::RecipeTerm& term : c.terms)
-                        for (const ModelOption& o : find_table(term.table).options) taken = taken || o.name == name;
+                    for (const auto* terms : {&c.terms, &c.den_terms})
+                        for (const tables::RecipeTerm& term : *terms)
+                            for (const ModelOption& o : find_table(term.table).options) taken = taken || o.name == name;
                 EXPECT_TRUE(taken) << t.id << " option " << name;
             }
         }
@@ -314,7 +323,8 @@ TEST(Presets, EveryPresetTableAgreesWithItsCoreTables) {
                 const PreparedTable preset = def.prepare(with(def, {}, method));
                 std::map<std::string, PreparedTable> cores;
                 for (const tables::ChannelRecipe& c : t.channels)
-                    for (const tables::RecipeTerm& term : c.terms)
+                    for (const auto* terms : {&c.terms, &c.den_terms})
+                    for (const tables::RecipeTerm& term : *terms)
                         if (!cores.count(term.table)) {
                             const TableDefinition& core = find_table(term.table);
                             cores.emplace(term.table, core.prepare(with(core, t.options, method)));
@@ -330,16 +340,25 @@ TEST(Presets, EveryPresetTableAgreesWithItsCoreTables) {
                     }
                     const TexelValue v = preset.evaluator->evaluate(c.data(), texel);
                     for (std::size_t ch = 0; ch < t.channels.size(); ++ch) {
-                        double expected = t.channels[ch].offset, error = 0.0;
-                        for (const tables::RecipeTerm& term : t.channels[ch].terms) {
-                            const TableDefinition& core = find_table(term.table);
-                            std::vector<double> x;
-                            for (const AxisSpec& a : core.axes) x.push_back(core_coordinate(t, a.axis.name, c));
-                            const TexelValue cv = cores.at(term.table).evaluator->evaluate(x.data(), texel);
-                            const auto k = static_cast<std::size_t>(term.channel);
-                            expected += term.coef * cv.value[k];
-                            error += std::abs(term.coef) * cv.error[k];
-                        }
+                        // Each sum and its error, then the ratio (recipe.h).
+                        auto sum = [&](const std::vector<tables::RecipeTerm>& terms, double offset) {
+                            double value = offset, err = 0.0;
+                            for (const tables::RecipeTerm& term : terms) {
+                                const TableDefinition& core = find_table(term.table);
+                                std::vector<double> x;
+                                for (const AxisSpec& a : core.axes) x.push_back(core_coordinate(t, a.axis.name, c));
+                                const TexelValue cv = cores.at(term.table).evaluator->evaluate(x.data(), texel);
+                                const auto k = static_cast<std::size_t>(term.channel);
+                                value += term.coef * cv.value[k];
+                                err += std::abs(term.coef) * cv.error[k];
+                            }
+                            return std::array<double, 2>{value, err};
+                        };
+                        const tables::ChannelRecipe& r = t.channels[ch];
+                        auto [expected, error] = sum(r.terms, r.offset);
+                        const auto [den, den_error] = sum(r.den_terms, r.den_offset);
+                        error = (error + std::abs(expected / den) * den_error) / std::abs(den);
+                        expected /= den;
                         EXPECT_NEAR(v.value[ch], expected, v.error[ch] + error + 1e-15)
                             << t.id << " channel " << ch << " texel " << texel << " " << to_string(method);
                         EXPECT_TRUE(std::isfinite(v.value[ch])) << t.id;

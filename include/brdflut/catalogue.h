@@ -92,6 +92,11 @@ struct TableDefinition {
     // The engine preset the table belongs to (`generate --preset NAME`); empty
     // for the default set that `generate --all` writes.
     std::string preset;
+    // For a preset table: the engine source it reproduces (repository, file,
+    // commit) and, per stored channel, its expression over core tables (e.g.
+    // "1 - ggx_albedo.0"); `list`, `brdflut docs` and the metadata show them.
+    std::string engine_source;
+    std::vector<std::string> channel_recipes;
     // Whether `identify` searches this table. Tables that cost milliseconds
     // a texel (the LTC fits; the glass averages, a 3-D integral each) are
     // left out: tabulating them for the coarse search would cost more than

@@ -26,6 +26,9 @@ enum class Visibility {
     separable,          // G2 = G1(o) G1(i)
     schlick_smith,      // G2 = G1_s(o) G1_s(i), G1_s(mu) = mu / (mu (1 - k) + k), k = alpha / 2
                         // (Karis 2013, "Real Shading in Unreal Engine 4", for image lighting)
+    smith_joint_approx, // G2 = 2 mu_o mu_i / (mu_i (mu_o (1 - a) + a) + mu_o (mu_i (1 - a) + a)), a = alpha:
+                        // Unreal's Vis_SmithJointApprox (a linear approximation of the height-correlated
+                        // G2, Heitz 2014), with which UE4 and UE5 build their PreintegratedGF texture
 };
 std::string_view to_string(Visibility v);
 Visibility visibility_from_string(std::string_view s);  // throws brdflut::Error
@@ -78,10 +81,19 @@ struct Ggx {
         return mu / (mu * (1.0 - k) + k);
     }
 
+    // Unreal's Vis_SmithJointApprox as a G2 (Vis = G2 / (4 mu_o mu_i)):
+    // equal to the height-correlated G2 at alpha = 0 and alpha = 1.
+    double G2_joint_approx(double mu_o, double mu_i) const {
+        if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
+        const double a = alpha;
+        return 2.0 * mu_o * mu_i / (mu_i * (mu_o * (1.0 - a) + a) + mu_o * (mu_i * (1.0 - a) + a));
+    }
+
     double G2(double mu_o, double mu_i, Visibility vis) const {
         if (mu_o <= 0.0 || mu_i <= 0.0) return 0.0;
         if (vis == Visibility::separable) return G1(mu_o) * G1(mu_i);
         if (vis == Visibility::schlick_smith) return G1_schlick(mu_o) * G1_schlick(mu_i);
+        if (vis == Visibility::smith_joint_approx) return G2_joint_approx(mu_o, mu_i);
         return 1.0 / (1.0 + lambda(mu_o) + lambda(mu_i));
     }
 

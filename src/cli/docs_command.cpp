@@ -103,8 +103,11 @@ std::string tables_page() {
                   << number(a.domain_min) << ", " << number(a.domain_max) << "] | " << cell(a.meaning) << " |\n";
             }
             o << "\n";
-            for (std::size_t c = 0; c < d.channels.size(); ++c) o << "- " << kLetters[c] << ": " << d.channels[c] << "\n";
+            for (std::size_t c = 0; c < d.channels.size(); ++c)
+                o << "- " << kLetters[c] << ": " << d.channels[c]
+                  << (c < d.channel_recipes.size() ? " = `" + d.channel_recipes[c] + "`" : std::string()) << "\n";
             o << "\n";
+            if (!d.engine_source.empty()) o << "Source: " << d.engine_source << ".\n\n";
             if (!d.options.empty()) {
                 o << "Options:";
                 for (const ModelOption& opt : d.options) o << " " << option_text(opt) << ";";
@@ -266,6 +269,8 @@ nlohmann::json catalogue_json() {
                             {"family", d.family},
                             {"preset", d.preset},
                             {"channels", d.channels},
+                            {"engine_source", d.engine_source},
+                            {"recipe", d.channel_recipes},
                             {"methods", d.supports_monte_carlo ? nlohmann::json{"quadrature", "mc"}
                                                                : nlohmann::json{"quadrature"}}};
         for (const AxisSpec& a : d.axes)

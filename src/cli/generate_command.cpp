@@ -73,7 +73,9 @@ int run_list(bool presets_only, bool json) {
         for (std::size_t i = 0; i < d.axes.size(); ++i)
             std::cout << "  " << kAxisLetters[i] << ": " << describe_axis(d.axes[i].axis) << "\n";
         for (std::size_t c = 0; c < d.channels.size(); ++c)
-            std::cout << "  " << kChannels[c] << ": " << d.channels[c] << "\n";
+            std::cout << "  " << kChannels[c] << ": " << d.channels[c]
+                      << (c < d.channel_recipes.size() ? " = " + d.channel_recipes[c] : std::string()) << "\n";
+        if (!d.engine_source.empty()) std::cout << "  source: " << d.engine_source << "\n";
         for (const ModelOption& o : d.options) {
             std::cout << "  --" << o.name;
             if (!o.default_value.empty()) std::cout << " (default " << o.default_value;

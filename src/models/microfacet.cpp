@@ -10,6 +10,7 @@ std::string_view to_string(Visibility v) {
     switch (v) {
         case Visibility::separable: return "separable";
         case Visibility::schlick_smith: return "schlick_smith";
+        case Visibility::smith_joint_approx: return "smith_joint_approx";
         case Visibility::height_correlated: break;
     }
     return "height_correlated";
@@ -19,8 +20,9 @@ Visibility visibility_from_string(std::string_view s) {
     if (s == "height_correlated") return Visibility::height_correlated;
     if (s == "separable") return Visibility::separable;
     if (s == "schlick_smith") return Visibility::schlick_smith;
+    if (s == "smith_joint_approx") return Visibility::smith_joint_approx;
     throw Error("visibility '" + std::string(s) +
-                "' is not known; allowed: height_correlated, separable, schlick_smith");
+                "' is not known; allowed: height_correlated, separable, schlick_smith, smith_joint_approx");
 }
 
 // Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1.

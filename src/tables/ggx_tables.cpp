@@ -90,7 +90,7 @@ TableDefinition make(Kind kind, std::string id, std::string description,
     d.description = std::move(description);
     d.axes = std::move(axes);
     d.channels = std::move(channels);
-    d.options = {tables::visibility_option()};
+    d.options = {tables::visibility_option({"height_correlated", "separable", "schlick_smith", "smith_joint_approx"})};
     d.supports_monte_carlo = true;
     d.prepare = [kind](const TableSettings& s) {
         const Visibility vis = visibility_from_string(tables::param(s, "visibility"));
@@ -121,7 +121,8 @@ void register_ggx_family(FamilyEntries& family) {
         {"", "GGX microfacet: split sums and albedo",
         "The single-scattering GGX BRDF (Walter et al. 2007) with F = 1 and the height-correlated Smith "
         "G2 (Heitz 2014); `--visibility separable` takes G1(o) G1(i) and `schlick_smith` Schlick's G1 "
-        "with k = alpha/2 (Karis 2013). With A = integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i and B "
+        "with k = alpha/2 (Karis 2013), `smith_joint_approx` Unreal's Vis_SmithJointApprox (the linear "
+        "approximation of the height-correlated G2 with which Unreal builds PreintegratedGF). With A = integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i and B "
         "= integral of f (1 - v.h)^5 cos(theta_i) dw_i an engine computes specular = F0 A + B (the split "
         "sum of Karis 2013); E = A + B is the directional albedo of Kulla-Conty energy compensation, f_ms "
         "= (1 - E(mu_o))(1 - E(mu_i)) / (pi (1 - E_avg)), with E_avg = 2 * integral of E(mu) mu dmu. The "

@@ -9,8 +9,13 @@
 //
 // Karis 2013, "Real Shading in Unreal Engine 4" (split sum, Schlick-Smith G)
 // Kulla and Conty 2017, "Revisiting Physically Based Shading at Imageworks"
+// Heitz 2014, "Understanding the Masking-Shadowing Function in Microfacet-Based
+//             BRDFs" (the height-correlated G2 that Vis_SmithJointApprox
+//             approximates)
+#include <algorithm>
 #include <cmath>
 
+#include "brdflut/generic_lobe.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/glass_integrals.h"
 #include "brdflut/lobe_integrals.h"
@@ -38,6 +43,42 @@ AxisSpec roughness(int count, Placement placement) {
 AxisSpec alpha_sqrt_linear(int count) {
     AxisSpec a = tables::alpha_axis(count);
     a.axis.placement = Placement::endpoints;
+    return a;
+}
+
+// The axis stored in reverse (Godot writes row SIZE - 1 - y).
+AxisSpec flipped(AxisSpec a) {
+    a.axis.flip = true;
+    return a;
+}
+
+// The axis's parameter clamped from below (USD Storm's max(NoV, 0.001)).
+AxisSpec clamped_low(AxisSpec a, double lo) {
+    a.axis.clamp_lo = lo;
+    a.axis.clamp_hi = a.axis.max;
+    return a;
+}
+
+// OSL BSDL's MiniMicrofacet axes (microfacet_tools_decl.h): cos = max((i/15)^2,
+// 1e-6) and rough = j/15 at end points with alpha = max(rough^2, 1e-5).
+AxisSpec bsdl_cos(int count) {
+    AxisSpec a = cos_theta(count, Placement::endpoints, Warp::square);
+    a.axis.clamp_lo = 1e-6;
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+AxisSpec bsdl_roughness(int count) {
+    AxisSpec a = roughness(count, Placement::endpoints);
+    a.axis.clamp_lo = std::sqrt(1e-5);
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+
+// GGX alpha itself, linear, cell centres (MaterialX's albedo table rows).
+AxisSpec alpha_linear(int count) {
+    AxisSpec a = tables::alpha_axis(count);
+    a.axis.warp = Warp::linear;
+    a.meaning = "GGX alpha (linear); the Charlie sheen is evaluated at the same alpha";
     return a;
 }
 
@@ -116,6 +157,26 @@ ClosedFormCheck separable_at_one() {
             }};
 }
 
+// A + B at roughness 1 from channels a and b of a table with axes
+// (roughness, cos_theta), as three.js lays them out.
+ClosedFormCheck split_at_one_swapped(int a, int b) {
+    return {"A + B at roughness 1 vs 1 - mu ln(1 + 1/mu)", 2 * kGgx + 1e-12, [a, b](const TexelEvaluator& e) {
+                return worst_error(e, grid_points({1.0}, kMus), [a, b](const TexelValue& v, const auto& p) {
+                    return v.value[static_cast<std::size_t>(a)] + v.value[static_cast<std::size_t>(b)] -
+                           ggx_albedo_alpha_one(p[1]);
+                });
+            }};
+}
+
+// Charlie sheen E at normal incidence in channel c, alpha axis second.
+ClosedFormCheck charlie_normal_alpha(int c) {
+    return {"Charlie E(1, alpha) vs 2^(1 - n/2) / (n + 2), n = 2 + 1/alpha", kSheenAbsTolerance + 1e-12,
+            [c](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({1.0}, {0.04, 0.25, 1.0}), c,
+                                  [](const auto& p) { return charlie_albedo_normal(p[1]); });
+            }};
+}
+
 // Charlie sheen E at normal incidence in channel c, roughness axis second.
 ClosedFormCheck charlie_normal(int c) {
     return {"Charlie E(1, r) vs 2^(1 - n/2) / (n + 2), n = 2 + 1/r^2", kSheenAbsTolerance + 1e-12,
@@ -132,6 +193,61 @@ ClosedFormCheck disney_diffuse_smooth(int c) {
                 return worst_over(e, grid_points(kMus, {0.0}), c, [](const auto& p) {
                     return 41.0 / 42.0 * (1.0 - 0.5 * std::pow(1.0 - p[0], 5)) - 0.5;
                 });
+            }};
+}
+
+// GGX with Unreal's Vis_SmithJointApprox as a generic lobe (generic_lobe.h):
+// f = D(h) G2 / (4 mu_o mu_i), the peak at the mirror direction.
+class JointApproxGgxLobe final : public GenericLobe {
+public:
+    explicit JointApproxGgxLobe(double alpha) : ggx_{alpha} {}
+    double f(const Vec3& wo, const Vec3& wi) const override {
+        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
+        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
+        const double cos_h = h.z / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
+        return ggx_.D(cos_h) * ggx_.G2_joint_approx(wo.z, wi.z) / (4.0 * wo.z * wi.z);
+    }
+    LobeHints hints(const Vec3& wo) const override {
+        LobeHints h;
+        h.has_peak = true;
+        h.peak = {-wo.x, -wo.y, wo.z};
+        h.width = 2.0 * ggx_.alpha;
+        h.aspect = std::min(1.0, wo.z + ggx_.alpha);
+        return h;
+    }
+
+private:
+    Ggx ggx_;
+};
+
+// A and B (channels 0, 1; axes cos_theta, roughness) against the generic lobe
+// path's quadrature of the same integrand, at roughness where the visibility
+// terms differ most from the height-correlated G2.
+ClosedFormCheck joint_approx_generic() {
+    return {"A, B vs the generic lobe path's quadrature of GGX with Vis_SmithJointApprox", kGgx + 1e-9,
+            [](const TexelEvaluator& e) {
+                CheckResult worst{0.0, ""};
+                for (const auto& p : grid_points({0.05, 0.5}, {0.4, 0.8})) {
+                    GenericOptions opt;
+                    opt.abs_tol = 1e-10;
+                    const Estimate<2> g =
+                        generic_moments<2>(JointApproxGgxLobe(p[1] * p[1]), p[0], kSplitSumWeights, opt);
+                    const TexelValue v = e.evaluate(p.data(), 0);
+                    for (std::size_t c = 0; c < 2; ++c) {
+                        const double err = std::abs(v.value[c] - g.value[c]);
+                        if (!std::isfinite(err)) return CheckResult{HUGE_VAL, point_text(p) + ": not finite"};
+                        if (err > worst.first || worst.second.empty()) worst = {err, point_text(p)};
+                    }
+                }
+                return worst;
+            }};
+}
+
+// BSDL's 1 - E at alpha = 1 (roughness axis second, cos_theta first).
+ClosedFormCheck one_minus_albedo_at_alpha_one() {
+    return {"1 - E at roughness 1 vs mu ln(1 + 1/mu)", kGgx + 1e-12, [](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.05, 0.25, 0.5, 1.0}, {1.0}), 0,
+                                  [](const auto& p) { return 1.0 - ggx_albedo_alpha_one(p[0]); });
             }};
 }
 
@@ -189,6 +305,14 @@ std::vector<AxisSpec> mu_r(int mus, int rs, Placement placement) {
     return {cos_theta(mus, placement), roughness(rs, placement)};
 }
 
+const char* kUnrealSource =
+    "EpicGames/UnrealEngine Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp (PreintegratedGF: "
+    "Vis_SmithJointApprox, m = roughness^2, 128x32 cell centres, G16R16), the same code in UE4 and UE 5.x "
+    "(read at the public mirror unicorn2022/UE5.8.0 @5d9a05c15b1f8c6d7b3354b360677ce30d688149)";
+const char* kGodotSource =
+    "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/integrate_dfg.glsl "
+    "@e8387d695efee663e2f427bd427792a6f0c633f0 (PR #103934)";
+
 std::vector<PresetDeclaration> declare() {
     const nlohmann::json hc = ggx_model(Visibility::height_correlated);
     nlohmann::json filament_model = hc;
@@ -197,6 +321,11 @@ std::vector<PresetDeclaration> declare() {
     hdrp_model["diffuse"] = "Disney (Burley 2012), per unit base colour, F_D90 = 0.5 + 2 r cos^2(theta_d)";
     nlohmann::json cycles_model = hc;
     cycles_model["fresnel"] = "1";
+    nlohmann::json godot_model = ggx_model(Visibility::schlick_smith);
+    godot_model["cloth"] = tables::charlie_sheen_model();
+    nlohmann::json materialx_model = hc;
+    materialx_model["roughness"] = "alpha = the row coordinate (linear); the sheen's Charlie alpha is the same";
+    materialx_model["sheen"] = tables::charlie_sheen_model();
     nlohmann::json glass_model = tables::glass_model(Visibility::height_correlated, false);
     glass_model.erase("side");
     glass_model["side"] = "ggx_glass_E: eta = n; ggx_glass_inv_E: eta = 1/n";
@@ -232,10 +361,24 @@ std::vector<PresetDeclaration> declare() {
            filament_model,
            {checks::split_at_one(-1, 1, false), checks::charlie_normal(2)}}}});
     all.push_back(
-        {{"unreal", "UE4's PreIntegratedGF: 128x32 scale and bias with Schlick-Smith G (k = alpha/2)",
+        {{"unreal",
+          "Unreal Engine's PreintegratedGF (UE4 and UE5): 128x32 scale and bias, GGX with Vis_SmithJointApprox",
           PixelType::float32},
-         {{"unreal_dfg", "UE4 PreIntegratedGF: specular = F0 * R + G, Schlick-Smith G with k = alpha/2",
-           "Karis 2013, \"Real Shading in Unreal Engine 4\" (IntegrateBRDF); UE4 SystemTextures.cpp",
+         {{"unreal_dfg",
+           "UE PreintegratedGF: specular = F0 * R + G, GGX with Vis_SmithJointApprox (a = alpha = r^2)",
+           kUnrealSource, mu_r(128, 32, Placement::center),
+           {split_a("A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i (scale)"),
+            split_b("B: integral of f (1 - v.h)^5 cos(theta_i) dw_i (bias)")},
+           {{"visibility", "smith_joint_approx"}},
+           ggx_model(Visibility::smith_joint_approx),
+           {checks::split_at_one(0, 1, false), checks::joint_approx_generic()}}}});
+    all.push_back(
+        {{"unreal_karis2013",
+          "Karis 2013 course notes' IntegrateBRDF: 128x32 scale and bias with Schlick-Smith G (k = alpha/2)",
+          PixelType::float32},
+         {{"unreal_karis2013_dfg",
+           "Karis 2013 split sum: specular = F0 * R + G, Schlick-Smith G with k = alpha/2",
+           "Karis 2013, \"Real Shading in Unreal Engine 4\" (IntegrateBRDF, course notes)",
            mu_r(128, 32, Placement::center),
            {split_a("A: integral of f (1 - (1 - v.h)^5) cos(theta_i) dw_i (scale)"),
             split_b("B: integral of f (1 - v.h)^5 cos(theta_i) dw_i (bias)")},
@@ -262,14 +405,14 @@ std::vector<PresetDeclaration> declare() {
           "tables (16^3, fresnel_moment_tables.cpp)",
           PixelType::float32},
          {{"cycles_ggx_e", "Cycles table_ggx_E: GGX albedo E, x = sqrt(alpha), rows mu, end points", cycles_source,
-           {alpha_sqrt_linear(32), cos_theta(32, Placement::endpoints)},
+           {cycles_rough(32), cycles_mu(32)},
            {{"E: integral of f cos(theta_i) dw_i with F = 1", {{"ggx_albedo", 0}}}},
            {},
            cycles_model,
            {checks::albedo_at_alpha_one()}},
           {"cycles_ggx_e_avg", "Cycles table_ggx_Eavg: GGX average albedo, x = sqrt(alpha), end points",
            cycles_source,
-           {alpha_sqrt_linear(32)},
+           {cycles_rough(32)},
            {{"E_avg: 2 * integral of E(mu) mu dmu", {{"ggx_albedo_avg", 0}}}},
            {},
            cycles_model,
@@ -336,12 +479,111 @@ std::vector<PresetDeclaration> declare() {
            tables::charlie_sheen_model(),
            {checks::charlie_normal(2)}}}});
     all.push_back(
-        {{"godot", "Godot 4's environment BRDF (an analytic fit in the engine) as a 128x128 split-sum table",
+        {{"godot",
+          "Godot 4 Forward+'s DFG texture: 128x128 RGBA16F, multiscatter form with Schlick-Smith G, rows "
+          "flipped, Charlie cloth in B",
           PixelType::half},
-         {{"godot_dfg", "Godot environment BRDF as a table: specular = F0 * R + G (height-correlated GGX)",
-           "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/"
-           "scene_forward_clustered.glsl (environment BRDF approximation)",
+         {{"godot_dfg",
+           "Godot Forward+ DFG: R = B term, G = A + B (Schlick-Smith, k = alpha/2), B = Charlie cloth, A = 1",
+           kGodotSource,
+           {cos_theta(128, Placement::center), flipped(roughness(128, Placement::center))},
+           {split_b("R: integral of f (1 - v.h)^5 cos(theta_i) dw_i (the B term)"),
+            split_sum("G: integral of f cos(theta_i) dw_i (A + B)"),
+            charlie("B: Charlie cloth, integral of D_charlie V_neubelt cos(theta_i) dw_i"),
+            {"A: 1", {}, 1.0}},
+           {{"visibility", "schlick_smith"}},
+           godot_model,
+           {checks::split_at_one(-1, 1, true), checks::charlie_normal(2)}}}});
+    all.push_back(
+        {{"godot_mobile",
+          "Godot 4 Mobile and Compatibility's environment BRDF (an analytic fit in the engine) as a 128x128 "
+          "split-sum table",
+          PixelType::half},
+         {{"godot_mobile_dfg",
+           "Godot Mobile environment BRDF as a table: specular = F0 * R + G (height-correlated GGX)",
+           "godotengine/godot servers/rendering/renderer_rd/shaders/forward_mobile/"
+           "scene_forward_mobile.glsl (environment BRDF approximation)",
            mu_r(128, 128, Placement::center),
+           {split_a(), split_b()},
+           {},
+           hc,
+           {checks::split_at_one(0, 1, false)}}}});
+    all.push_back(
+        {{"threejs", "three.js's DFGLUTData: 32x32 RG16F split sum, columns roughness, rows NdotV",
+          PixelType::half},
+         {{"threejs_dfg", "three.js DFGLUTData: (scale, bias) = (A, B), height-correlated GGX, x = roughness",
+           "mrdoob/three.js src/renderers/shaders/DFGLUTData.js @95dc8849b1f9037294afaa03ef3330e41fd58aa6 "
+           "(generator utils/generateDFGLUT.js)",
+           {roughness(32, Placement::center), cos_theta(32, Placement::center)},
+           {split_a(), split_b()},
+           {},
+           hc,
+           {checks::split_at_one_swapped(0, 1)}}}});
+    all.push_back(
+        {{"materialx",
+          "MaterialX's u_albedoTable: 64x64, rows GGX alpha (linear), split sum in RG and the Imageworks "
+          "sheen albedo in B",
+          PixelType::float32},
+         {{"materialx_albedo",
+           "MaterialX u_albedoTable: R = A, G = B (height-correlated GGX at alpha = y), B = Charlie sheen albedo",
+           "AcademySoftwareFoundation/MaterialX @4177b2cbd48b579ca1e8f7d9901584d811c63b68 "
+           "libraries/pbrlib/genglsl/lib/mx_generate_albedo_table.glsl, mx_microfacet_specular.glsl, "
+           "mx_microfacet_sheen.glsl",
+           {cos_theta(64, Placement::center), alpha_linear(64)},
+           {split_a(), split_b(),
+            charlie("B: Imageworks sheen albedo, Charlie D at alpha = y with Neubelt's visibility")},
+           {},
+           materialx_model,
+           {checks::split_at_one(0, 1, false), checks::charlie_normal_alpha(2)}}}});
+    all.push_back(
+        {{"osl_bsdl",
+          "OSL BSDL's MiniMicrofacetGGX energy table: 16x16, 1 - E of GGX, cos = (i/15)^2, alpha = (j/15)^2",
+          PixelType::float32},
+         {{"osl_bsdl_ggx", "BSDL spi::MiniMicrofacetGGX: 1 - E (height-correlated GGX, F = 1)",
+           "AcademySoftwareFoundation/OpenShadingLanguage @ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa "
+           "src/libbsdl/src/genluts.cpp, "
+           "include/BSDL/microfacet_tools_decl.h (MiniMicrofacet, get_cosine, GGXDist)",
+           {bsdl_cos(16), bsdl_roughness(16)},
+           {{"1 - E: the energy GGX loses, 1 - integral of f cos(theta_i) dw_i", {{"ggx_albedo", 0, -1.0}}, 1.0}},
+           {},
+           cycles_model,
+           {checks::one_minus_albedo_at_alpha_one()}}}});
+    all.push_back(
+        {{"babylon",
+          "Babylon.js's environmentBRDFTexture without its RGBD encoding: 256x256, R = B term, G = A + B, "
+          "B = Charlie sheen",
+          PixelType::half},
+         {{"babylon_brdf",
+           "Babylon.js environment BRDF: R = B term, G = A + B (height-correlated), B = Charlie sheen albedo",
+           "BabylonJS/Babylon.js packages/dev/core/src/Misc/brdfTextureTools.ts "
+           "@02e530f440cdc783201fcc6131376f7a8c5ed8f4 (getEnvironmentBRDFTexture); pbrBRDFFunctions "
+           "(getReflectanceFromBRDFLookup, getSheenReflectanceFromBRDFLookup)",
+           mu_r(256, 256, Placement::center),
+           {split_b("R: integral of f (1 - v.h)^5 cos(theta_i) dw_i (the B term)"),
+            split_sum("G: integral of f cos(theta_i) dw_i (A + B)"),
+            charlie("B: Charlie sheen albedo, alpha = sheen_roughness^2")},
+           {},
+           filament_model,
+           {checks::split_at_one(-1, 1, false), checks::charlie_normal(2)}}}});
+    all.push_back(
+        {{"usd_storm",
+          "OpenUSD Storm's domeLightBRDF: split sum with Schlick-Smith G (k = alpha/2), NdotE clamped to "
+          "0.001, the dome light's cubemap size (256 here)",
+          PixelType::half},
+         {{"usd_storm_dfg", "USD Storm domeLightBRDF: specular = F * R + G, Schlick-Smith G (k = alpha/2)",
+           "PixarAnimationStudios/OpenUSD pxr/imaging/hdSt/shaders/domeLight.glslfx "
+           "@0a8af1f4fda322d7efd7bcc0ddf1c4b399c8a1a6 (DomeLight.BRDF); simpleLightingShader.cpp (size)",
+           {clamped_low(cos_theta(256, Placement::center), 0.001), roughness(256, Placement::center)},
+           {split_a(), split_b()},
+           {{"visibility", "schlick_smith"}},
+           ggx_model(Visibility::schlick_smith),
+           {checks::split_at_one(0, 1, true)}}}});
+    all.push_back(
+        {{"bevy", "Bevy's brdf_dfg_lut (dfg_lut feature): split sum sampled at (NdotV, perceptual roughness)",
+          PixelType::half},
+         {{"bevy_dfg", "Bevy F_AB lookup: specular = F0 * R + G (height-correlated GGX, as Bevy's direct lighting)",
+           "bevyengine/bevy crates/bevy_pbr/src/render/pbr_lighting.wgsl (F_AB, brdf_dfg_lut), PR #23737",
+           mu_r(64, 64, Placement::center),
            {split_a(), split_b()},
            {},
            hc,
@@ -384,14 +626,17 @@ void register_preset_family(FamilyEntries& family) {
     family.families.push_back(
         {"", "Engine presets",
          "The tables engines ship, each exactly in the engine's layout (grid, texel placement, axis warps, "
-         "roughness parameterization, channel order and meaning, visibility term): each is one data entry, a "
-         "recipe per stored channel (a linear combination of core tables' channels plus an offset, with the "
-         "options the core tables take), evaluated from the core tables themselves, so that compare, verify "
-         "and inspect work on them unchanged: Filament's DFG with cloth, Unreal's PreIntegratedGF, HDRP's "
-         "PreIntegratedFGD, Cycles' GGX and rough glass albedo tables, glTF-IBL-Sampler's LUTs and Godot's "
-         "environment BRDF. Each names the engine source it follows in its metadata; [the engines "
-         "page](../engines.md) says what each engine's shipped table holds and how brdflut's compares with "
-         "it."});
+         "clamps, roughness parameterization, channel order and meaning, visibility term): each is one data "
+         "entry, a recipe per stored channel (a linear combination of core tables' channels plus an offset, "
+         "or the ratio of two such sums, with the options the core tables take; the metadata records each "
+         "channel's expression), evaluated from the core tables themselves, so that compare, verify and "
+         "inspect work on them unchanged: Filament's DFG with cloth, Unreal's PreintegratedGF (and the "
+         "Karis 2013 course-notes variant), HDRP's PreIntegratedFGD, Cycles' GGX and rough glass albedo "
+         "tables with their clamps, glTF-IBL-Sampler's LUTs, Godot's Forward+ DFG texture (and the Mobile "
+         "fit as a table), three.js's DFGLUTData, MaterialX's albedo table, OSL BSDL's GGX energy table, "
+         "Babylon.js's environment BRDF, USD Storm's dome-light BRDF and Bevy's DFG LUT. Each names the "
+         "engine source it follows in its metadata; [the engines page](../engines.md) says what each "
+         "engine's shipped table holds and how brdflut's compares with it."});
     for (const tables::PresetDeclaration& p : tables::preset_declarations())
         for (const tables::RecipeTable& t : p.tables)
             family.tables.push_back(tables::recipe_table(t, p.preset.name, kMethod));

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include "brdflut/error.h"
@@ -69,16 +71,13 @@ public:
         }
         for (std::size_t ch = 0; ch < channels_.size(); ++ch) {
             const RecipePlan::Channel& r = channels_[ch];
-            double value = r.offset, error = 0.0;
-            for (std::size_t t = 0; t < r.terms.size(); ++t) {
-                const RecipePlan::Term& term = r.terms[t];
-                const auto k = static_cast<std::size_t>(term.channel);
-                const TexelValue& v = in[static_cast<std::size_t>(term.core)];
-                const double x = term.coef * v.value[k], e = std::abs(term.coef) * v.error[k];
-                value = t == 0 ? x : value + x;
-                error = t == 0 ? e : error + e;
+            auto [value, error] = sum(in, r.terms, r.offset);
+            if (r.ratio()) {
+                const auto [den, den_error] = sum(in, r.den_terms, r.den_offset);
+                const double q = value / den;
+                error = (error + std::abs(q) * den_error) / std::abs(den);
+                value = q;
             }
-            if (!r.terms.empty() && r.offset != 0.0) value += r.offset;
             out.value[ch] = value;
             out.error[ch] = error;
         }
@@ -86,6 +85,23 @@ public:
     }
 
 private:
+    // The terms in order, the offset last, so that a single term with coef
+    // 1 and no offset gives the core value to the bit: {value, error}.
+    static std::array<double, 2> sum(const std::array<TexelValue, kMaxRecipeCores>& in,
+                                     const std::vector<RecipePlan::Term>& terms, double offset) {
+        double value = offset, error = 0.0;
+        for (std::size_t t = 0; t < terms.size(); ++t) {
+            const RecipePlan::Term& term = terms[t];
+            const auto k = static_cast<std::size_t>(term.channel);
+            const TexelValue& v = in[static_cast<std::size_t>(term.core)];
+            const double x = term.coef * v.value[k], e = std::abs(term.coef) * v.error[k];
+            value = t == 0 ? x : value + x;
+            error = t == 0 ? e : error + e;
+        }
+        if (!terms.empty() && offset != 0.0) value += offset;
+        return {value, error};
+    }
+
     std::vector<Core> cores_;
     std::vector<RecipePlan::Channel> channels_;
 };
@@ -127,19 +143,29 @@ RecipePlan plan_recipe(const RecipeTable& e, const std::function<const TableDefi
         if (!std::isfinite(r.offset))
             throw Error(what + " channel " + std::to_string(ch) + ": offset " + std::to_string(r.offset) +
                         " is not finite");
-        RecipePlan::Channel out{{}, r.offset};
-        for (const RecipeTerm& t : r.terms) {
-            const int core = core_index(t.table);
-            const int count = static_cast<int>(plan.cores[static_cast<std::size_t>(core)].def->channels.size());
-            if (t.channel < 0 || t.channel >= count)
-                throw Error(what + " channel " + std::to_string(ch) + ": channel " + std::to_string(t.channel) +
-                            " of core table '" + t.table + "' does not exist; allowed 0 to " +
-                            std::to_string(count - 1));
-            if (!std::isfinite(t.coef))
-                throw Error(what + " channel " + std::to_string(ch) + ": coefficient " + std::to_string(t.coef) +
-                            " of '" + t.table + "' is not finite");
-            out.terms.push_back({core, t.channel, t.coef});
-        }
+        if (!std::isfinite(r.den_offset))
+            throw Error(what + " channel " + std::to_string(ch) + ": denominator offset " +
+                        std::to_string(r.den_offset) + " is not finite");
+        if (r.den_terms.empty() && r.den_offset == 0.0)
+            throw Error(what + " channel " + std::to_string(ch) + ": the denominator is the constant 0");
+        auto plan_terms = [&](const std::vector<RecipeTerm>& terms) {
+            std::vector<RecipePlan::Term> planned;
+            for (const RecipeTerm& t : terms) {
+                const int core = core_index(t.table);
+                const int count =
+                    static_cast<int>(plan.cores[static_cast<std::size_t>(core)].def->channels.size());
+                if (t.channel < 0 || t.channel >= count)
+                    throw Error(what + " channel " + std::to_string(ch) + ": channel " + std::to_string(t.channel) +
+                                " of core table '" + t.table + "' does not exist; allowed 0 to " +
+                                std::to_string(count - 1));
+                if (!std::isfinite(t.coef))
+                    throw Error(what + " channel " + std::to_string(ch) + ": coefficient " +
+                                std::to_string(t.coef) + " of '" + t.table + "' is not finite");
+                planned.push_back({core, t.channel, t.coef});
+            }
+            return planned;
+        };
+        RecipePlan::Channel out{plan_terms(r.terms), r.offset, plan_terms(r.den_terms), r.den_offset};
         plan.channels.push_back(out);
     }
     for (const auto& [name, value] : e.options) {
@@ -161,6 +187,42 @@ RecipePlan plan_recipe(const RecipeTable& e, const std::function<const TableDefi
     return plan;
 }
 
+namespace {
+// A number as the shortest decimal that reads back to it.
+std::string number(double v) {
+    char buf[32];
+    for (int p = 1; p <= 17; ++p) {
+        std::snprintf(buf, sizeof buf, "%.*g", p, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    return buf;
+}
+
+std::string sum_expression(const std::vector<RecipeTerm>& terms, double offset) {
+    std::string out;
+    for (const RecipeTerm& t : terms) {
+        const std::string name = t.table + "." + std::to_string(t.channel);
+        const double c = t.coef;
+        const std::string mag = std::abs(c) == 1.0 ? name : number(std::abs(c)) + " * " + name;
+        if (out.empty())
+            out = (c < 0 ? "-" : "") + mag;
+        else
+            out += (c < 0 ? " - " : " + ") + mag;
+    }
+    if (out.empty()) return number(offset);
+    if (offset == 0.0) return out;
+    // A leading negated term with an offset reads as "offset - term".
+    if (terms.size() == 1 && terms[0].coef < 0) return number(offset) + " " + out.replace(0, 1, "- ");
+    return out + (offset < 0 ? " - " : " + ") + number(std::abs(offset));
+}
+}  // namespace
+
+std::string channel_expression(const ChannelRecipe& c) {
+    const std::string n = sum_expression(c.terms, c.offset);
+    if (c.den_terms.empty() && c.den_offset == 1.0) return n;
+    return "(" + n + ") / (" + sum_expression(c.den_terms, c.den_offset) + ")";
+}
+
 TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset, const RecipeMethod& method) {
     TableDefinition d;
     d.id = entry.id;
@@ -168,12 +230,15 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
     d.axes = entry.axes;
     for (const ChannelRecipe& c : entry.channels) d.channels.push_back(c.meaning);
     d.preset = preset;
+    d.engine_source = entry.engine_source;
+    for (const ChannelRecipe& c : entry.channels) d.channel_recipes.push_back(channel_expression(c));
     d.checks = entry.checks;
     // Until resolve_recipe_tables has read the core tables.
     d.supports_monte_carlo = true;
     nlohmann::json model = entry.model;
     model["preset"] = preset;
     model["engine_source"] = entry.engine_source;
+    model["recipe"] = d.channel_recipes;
     RecipeTable e = entry;
     e.checks.clear();
     d.prepare = [e, model, method](const TableSettings& s) {

@@ -1,6 +1,8 @@
 // Tables declared as recipes over core catalogue tables: each stored channel
-// is a linear combination of channels of core tables plus an offset, in a
-// layout of its own. The engine presets (preset_tables.cpp) are such
+// is a linear combination of channels of core tables plus an offset, or the
+// ratio of two such sums, in a layout of its own (1 - x is the sum -x + 1,
+// x / (1 + x) the ratio of x to x + 1, an affine range remap a sum with its
+// coefficients and offset). The engine presets (preset_tables.cpp) are such
 // declarations, one data entry a table.
 //
 // At each texel the recipe's coordinates go to each core table's axes by
@@ -32,14 +34,23 @@ struct RecipeTerm {
     double coef = 1.0;
 };
 
-// One stored channel: its meaning (TableDefinition::channels), the sum of
-// the terms, plus offset. Without terms the channel is the constant offset.
-// Errors add as |coef| times each term's error; evaluations add.
+// One stored channel: its meaning (TableDefinition::channels) and its value
+//   N / D,  N = sum of terms + offset,  D = sum of den_terms + den_offset
+// (D = 1, the default, leaves N). Without terms N is the constant offset.
+// Errors of a sum add as |coef| times each term's error; the ratio's error
+// is (err N + |N / D| err D) / |D|, its first-order bound. Evaluations add.
 struct ChannelRecipe {
     std::string meaning;
     std::vector<RecipeTerm> terms;
     double offset = 0.0;
+    std::vector<RecipeTerm> den_terms = {};
+    double den_offset = 1.0;
 };
+
+// The channel's expression over its core tables, e.g. "ggx_dfg.0 + ggx_dfg.1",
+// "1 - ggx_albedo.0" or "(ggx_dfg.1) / (ggx_dfg.0 + ggx_dfg.1)": what the
+// metadata records (model.recipe) and `list` shows.
+std::string channel_expression(const ChannelRecipe& c);
 
 // A table declared as a recipe.
 struct RecipeTable {
@@ -85,6 +96,9 @@ struct RecipePlan {
     struct Channel {
         std::vector<Term> terms;
         double offset;
+        std::vector<Term> den_terms = {};
+        double den_offset = 1.0;
+        bool ratio() const { return !den_terms.empty() || den_offset != 1.0; }
     };
     std::vector<Core> cores;
     std::vector<Channel> channels;
