@@ -99,9 +99,10 @@ SkinProfile deon_skin_profile();
 Estimate<3> preintegrated_skin(const SkinProfile& p, SkinGeometry g, double n_dot_l, double curvature,
                                double abs_tol);
 // The same ratio by a different rule: composite 32-point Gauss-Legendre on
-// panels graded geometrically towards the profile's peak at x = 0 (halving
-// down to 2^-50 pi), split at the same kinks, with the sphere's denominator
-// integrated too (not its closed form). No error estimate.
+// panels graded geometrically towards both ends of every piece between the
+// kinks (the profile's peak at x = 0 included; widths halving down to 2^-50
+// of the piece), with the sphere's denominator integrated too (not its
+// closed form). No error estimate.
 std::array<double, 3> preintegrated_skin_gauss(const SkinProfile& p, SkinGeometry g, double n_dot_l,
                                                double curvature);
 // Monte Carlo, per channel: sphere, q drawn by area from an equal mixture
