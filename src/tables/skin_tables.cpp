@@ -212,6 +212,9 @@ TableDefinition skin_table(std::string id, std::string description) {
     d.axes = {n_dot_l_axis(), curvature_axis()};
     d.channels = kChannels;
     d.supports_monte_carlo = true;
+    // An adaptive integral of a few thousand evaluations a texel: left out
+    // of identify's coarse search (see catalogue.h), as the glass averages.
+    d.searched_by_identify = false;
     return d;
 }
 
