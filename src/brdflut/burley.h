@@ -4,8 +4,8 @@
 // transmission through a slab as Unreal Engine defines it.
 //
 // Christensen and Burley 2015, "Approximate Reflectance Profiles for
-// Efficient Subsurface Scattering" (the profile, eq. 2-3; the scalings,
-// eq. 5, 6 and 8).
+// Efficient Subsurface Scattering" (the profile, its CDF and the three
+// fitted scalings).
 //
 // Units: the profile is self-similar in x = r / d, d = l / s(A), where l is a
 // mean free path (of the volume, or the diffuse mean free path on the surface
@@ -38,11 +38,11 @@ double burley_inverse_cdf(double u, double* error = nullptr);
 
 // The three scalings of the paper: d = l / s(A) with
 //   searchlight           s = 1.85 - A + 7 |A - 0.8|^3   (l: volume mean free path, light entering
-//                                                        perpendicular to the surface; eq. 5)
+//                                                        perpendicular to the surface)
 //   diffuse_transmission  s = 1.9 - A + 3.5 (A - 0.8)^2  (l: volume mean free path, diffuse
-//                                                        transmission at the surface; eq. 6)
+//                                                        transmission at the surface)
 //   dmfp                  s = 3.5 + 100 (A - 0.33)^4     (l: diffuse mean free path on the
-//                                                        surface; eq. 8)
+//                                                        surface)
 enum class BurleyScaling { searchlight, diffuse_transmission, dmfp };
 std::string_view to_string(BurleyScaling s);
 BurleyScaling burley_scaling_from_string(std::string_view s);  // throws brdflut::Error

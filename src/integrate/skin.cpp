@@ -101,9 +101,10 @@ double RadialProfile::sample_radius(double u, double r_max) const {
 }
 
 const std::vector<SkinGaussian>& deon_skin_gaussians() {
-    // d'Eon and Luebke 2007, GPU Gems 3, ch. 14, Table 14-1: the variances
-    // (mm^2) and the red, green and blue weights of the six Gaussians whose
-    // sum fits a three-layer skin model; each channel's weights add to 1.
+    // d'Eon and Luebke 2007, GPU Gems 3, ch. 14, as Jimenez and Gutierrez's
+    // 2009 screen-space SSS fitting script quotes them: the variances (mm^2)
+    // and the red, green and blue weights of the six Gaussians whose sum fits
+    // a three-layer skin model; each channel's weights add to 1.
     static const std::vector<SkinGaussian> g = {
         {0.0064, {0.233, 0.455, 0.649}}, {0.0484, {0.100, 0.336, 0.344}}, {0.187, {0.118, 0.198, 0.0}},
         {0.567, {0.113, 0.007, 0.007}},  {1.99, {0.358, 0.004, 0.0}},     {7.41, {0.078, 0.0, 0.0}},

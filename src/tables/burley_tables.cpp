@@ -218,7 +218,7 @@ void register_burley_family(FamilyEntries& family) {
             PreparedTable p;
             p.evaluator = std::make_unique<ScalingEvaluator>();
             p.model = burley_model();
-            p.model["source"] = "Christensen and Burley 2015, eq. 5, 6 and 8 (fits to Monte Carlo)";
+            p.model["source"] = "Christensen and Burley 2015 (fits to Monte Carlo)";
             p.method = closed_form_method("the three polynomials of the paper");
             return p;
         };
