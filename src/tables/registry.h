@@ -92,6 +92,10 @@ Estimate<2> ggx_split_sum_shared(double mu, double alpha, Visibility vis, double
 // Model metadata of the Charlie sheen lobe (sheen_tables.cpp).
 nlohmann::json charlie_sheen_model();
 
+// The Burley profile's `--scaling` option (burley_tables.cpp), one help text
+// for every table that takes it.
+ModelOption burley_scaling_option();
+
 // Number of standard errors a Monte Carlo texel's error estimate spans.
 inline constexpr double kMcErrorSigmas = 4.0;
 
