@@ -390,13 +390,13 @@ void register_sheen_charlie_family(FamilyEntries& family) {
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::moments, "sheen_charlie_moments",
                        "Charlie sheen albedo E, Fresnel moment F and E/(1 + E), Estevez-Kulla shadowing by default",
-                       {tables::cos_theta_axis(64), charlie_alpha_axis(64)},
+                       {tables::cos_theta_axis(32), charlie_alpha_axis(32)},
                        {"E: integral of f cos(theta_i) dw_i", "F: integral of f (1 - v.h)^5 cos(theta_i) dw_i",
                         "E / (1 + E) (HDRP's encoding of E)"}));
     out.back().checks = {half_vector_check(0), half_vector_check(1), half_vector_check(2)};
     out.push_back(make(Kind::average, "sheen_charlie_moments_avg",
                        "Charlie sheen average albedo and Fresnel moment: 2 * integral of E(mu) mu dmu, and of F",
-                       {charlie_alpha_axis(32)},
+                       {charlie_alpha_axis(16)},
                        {"E_avg: 2 * integral of E(mu) mu dmu", "F_avg: 2 * integral of F(mu) mu dmu"}));
     out.back().checks = {average_check(0), average_check(1)};
     out.push_back(make(Kind::fabric, "fabric_lambert_albedo",
