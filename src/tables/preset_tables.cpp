@@ -23,6 +23,7 @@
 #include "tables/checks.h"
 #include "tables/recipe.h"
 #include "tables/registry.h"
+#include "tables/sheen_charlie_check.h"
 
 namespace brdflut {
 namespace {
@@ -120,9 +121,11 @@ nlohmann::json ggx_model(Visibility vis) {
 const tables::RecipeMethod kMethod{
     "per channel the rule of the matching core table: ggx_dfg (split sums), ggx_albedo_avg, "
     "ggx_glass_albedo and ggx_glass_albedo_avg (glass), "
-    "disney_diffuse_albedo, sheen_charlie_albedo; error per value: that rule's estimate",
+    "disney_diffuse_albedo, sheen_charlie_albedo, sheen_charlie_moments (generic lobe path), "
+    "fabric_lambert_albedo; error per value: that rule's estimate",
     "as the core tables: GGX visible normals (ggx_*), cosine hemisphere (disney_*), uniform + Charlie "
-    "mixture (sheen_*), a defensive mixture of GGX visible normals (ggx_glass_*)"};
+    "mixture (sheen_charlie_albedo), cosine + reflected Charlie normals (sheen_charlie_moments), a defensive "
+    "mixture of GGX visible normals (ggx_glass_*)"};
 
 // The presets' independent checks: the closed forms of their channels'
 // integrals, at the preset's own coordinates. Each allows the sum of the
@@ -251,6 +254,29 @@ ClosedFormCheck one_minus_albedo_at_alpha_one() {
             }};
 }
 
+// A channel of a Charlie moments table against the half-vector rule
+// (sheen_charlie_check.h): E (moment 0), F (1) or E/(1 + E) (2), axes
+// (cos_theta, roughness r with alpha = r^2) or, when `alpha_axis`, (cos_theta, alpha).
+ClosedFormCheck charlie_moment(int c, int moment, SheenShadowing s, bool alpha_axis) {
+    const char* what = moment == 0 ? "E" : moment == 1 ? "F (Fresnel moment)" : "E/(1 + E)";
+    return {std::string(what) + " vs a nested Gauss-Kronrod rule over the half vector (" + to_string(s) + ")",
+            1e-8 + 1e-10, [c, moment, s, alpha_axis](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.1, 0.6, 0.95}, {0.3, 0.8}), c, [&](const auto& p) {
+                    const double alpha = alpha_axis ? p[1] : p[1] * p[1];
+                    const auto r = charlie_moments_by_half_vector(p[0], alpha, s);
+                    return moment == 2 ? r[0] / (1.0 + r[0]) : r[static_cast<std::size_t>(moment)];
+                });
+            }};
+}
+
+// HDRP's fabric Lambert albedo 1 - r^2/2 in channel c.
+ClosedFormCheck fabric_lambert(int c) {
+    return {"fabric Lambert albedo vs 1 - r^2/2", 1e-8 + 1e-12, [c](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.1, 0.9}, {0.0, 0.5, 1.0}), c,
+                                  [](const auto& p) { return 1.0 - 0.5 * p[1] * p[1]; });
+            }};
+}
+
 // Cycles' E over (alpha, mu) at alpha = 1.
 ClosedFormCheck albedo_at_alpha_one() {
     return {"E at alpha = 1 vs 1 - mu ln(1 + 1/mu)", 2 * kGgx + 1e-12, [](const TexelEvaluator& e) {
@@ -300,6 +326,19 @@ ChannelRecipe split_a(std::string meaning = kA) { return {std::move(meaning), {{
 ChannelRecipe split_b(std::string meaning = kB) { return {std::move(meaning), {{"ggx_dfg", 1}}}; }
 ChannelRecipe split_sum(std::string meaning) { return {std::move(meaning), {{"ggx_dfg", 0}, {"ggx_dfg", 1}}}; }
 ChannelRecipe charlie(std::string meaning) { return {std::move(meaning), {{"sheen_charlie_albedo", 0}}}; }
+// Channel c of sheen_charlie_moments: E (0), F (1), E/(1 + E) (2).
+ChannelRecipe charlie_moment(std::string meaning, int c) {
+    return {std::move(meaning), {{"sheen_charlie_moments", c}}};
+}
+
+// Unreal's cloth table indexes D_Charlie by the row coordinate itself
+// (D_Charlie(Roughness, NoH) takes 1/Roughness as the exponent).
+AxisSpec alpha_linear(int count) {
+    AxisSpec a = tables::alpha_axis(count);
+    a.axis.warp = Warp::linear;
+    a.meaning = "Charlie alpha, linear in the row coordinate (Unreal's D_Charlie(Roughness) exponent 1/Roughness)";
+    return a;
+}
 
 std::vector<AxisSpec> mu_r(int mus, int rs, Placement placement) {
     return {cos_theta(mus, placement), roughness(rs, placement)};
@@ -319,6 +358,18 @@ std::vector<PresetDeclaration> declare() {
     filament_model["cloth"] = tables::charlie_sheen_model();
     nlohmann::json hdrp_model = hc;
     hdrp_model["diffuse"] = "Disney (Burley 2012), per unit base colour, F_D90 = 0.5 + 2 r cos^2(theta_d)";
+    nlohmann::json hdrp_charlie_model = {
+        {"brdf", "Charlie sheen (Estevez and Kulla 2017) with their Lambda fit, no softening, no Fresnel"},
+        {"distribution", "charlie: (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)"},
+        {"shadowing", "estevez_kulla"},
+        {"diffuse", "fabric Lambert (1 - alpha/2)/pi"},
+        {"roughness", "alpha = perceptual_roughness^2"}};
+    nlohmann::json gltf_sheen_model = hdrp_charlie_model;
+    gltf_sheen_model.erase("diffuse");
+    gltf_sheen_model["brdf"] = "KHR_materials_sheen: D_Charlie V_Sheen (Estevez-Kulla Lambda fit, no softening)";
+    nlohmann::json unreal_cloth_model = tables::charlie_sheen_model();
+    unreal_cloth_model["roughness"] = "alpha = the row coordinate (D_Charlie(Roughness): exponent 1/Roughness)";
+    unreal_cloth_model["fresnel"] = "1; G holds the moment of (1 - v.h)^5";
     nlohmann::json cycles_model = hc;
     cycles_model["fresnel"] = "1";
     nlohmann::json godot_model = ggx_model(Visibility::schlick_smith);
@@ -362,7 +413,8 @@ std::vector<PresetDeclaration> declare() {
            {checks::split_at_one(-1, 1, false), checks::charlie_normal(2)}}}});
     all.push_back(
         {{"unreal",
-          "Unreal Engine's PreintegratedGF (UE4 and UE5): 128x32 scale and bias, GGX with Vis_SmithJointApprox",
+          "Unreal Engine's PreintegratedGF (UE4 and UE5): 128x32 scale and bias, GGX with Vis_SmithJointApprox; "
+          "UE5's 32x32 cloth energy table (Charlie with Neubelt's visibility: E and the Fresnel moment)",
           PixelType::float32},
          {{"unreal_dfg",
            "UE PreintegratedGF: specular = F0 * R + G, GGX with Vis_SmithJointApprox (a = alpha = r^2)",
@@ -371,7 +423,18 @@ std::vector<PresetDeclaration> declare() {
             split_b("B: integral of f (1 - v.h)^5 cos(theta_i) dw_i (bias)")},
            {{"visibility", "smith_joint_approx"}},
            ggx_model(Visibility::smith_joint_approx),
-           {checks::split_at_one(0, 1, false), checks::joint_approx_generic()}}}});
+           {checks::split_at_one(0, 1, false), checks::joint_approx_generic()}},
+          {"unreal_cloth_energy",
+           "UE5 ShadingEnergyClothSpecTexture: (E, F) of Charlie with Neubelt's visibility, alpha = row coordinate",
+           "Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 2, SUBSTRATE_ENABLED: "
+           "D_Charlie(Roughness) Vis_Ashikhmin), Engine/Source/Runtime/Renderer/Private/ShadingEnergyConservation.cpp",
+           {cos_theta(32, Placement::center), alpha_linear(32)},
+           {charlie_moment("E: integral of D_charlie V_neubelt cos(theta_i) dw_i", 0),
+            charlie_moment("F: integral of D_charlie V_neubelt (1 - v.h)^5 cos(theta_i) dw_i", 1)},
+           {{"sheen_shadowing", "neubelt"}},
+           unreal_cloth_model,
+           {checks::charlie_moment(0, 0, SheenShadowing::neubelt, true),
+            checks::charlie_moment(1, 1, SheenShadowing::neubelt, true)}}}});
     all.push_back(
         {{"unreal_karis2013",
           "Karis 2013 course notes' IntegrateBRDF: 128x32 scale and bias with Schlick-Smith G (k = alpha/2)",
@@ -386,7 +449,9 @@ std::vector<PresetDeclaration> declare() {
            ggx_model(Visibility::schlick_smith),
            {checks::split_at_one(0, 1, true)}}}});
     all.push_back(
-        {{"hdrp", "Unity HDRP's PreIntegratedFGD: 64x64, x = sqrt(NdotV), end points, GGX and Disney diffuse",
+        {{"hdrp",
+          "Unity HDRP's PreIntegratedFGD tables, 64x64: GGX and Disney diffuse (x = sqrt(NdotV), end points); "
+          "Charlie sheen and fabric Lambert (x = NdotV, centres)",
           PixelType::half},
          {{"hdrp_fgd", "HDRP PreIntegratedFGD_GGXDisneyDiffuse: specular = lerp(R, G, F0), diffuse = B + 0.5",
            "Unity-Technologies/Graphics com.unity.render-pipelines.core ShaderLibrary/"
@@ -397,7 +462,20 @@ std::vector<PresetDeclaration> declare() {
             {"B: Disney diffuse albedo E(mu, r) - 0.5", {{"disney_diffuse_albedo", 0}}, -0.5}},
            {},
            hdrp_model,
-           {checks::split_at_one(-1, 1, false), checks::disney_diffuse_smooth(2)}}}});
+           {checks::split_at_one(-1, 1, false), checks::disney_diffuse_smooth(2)}},
+          {"hdrp_fgd_charlie_fabric",
+           "HDRP PreIntegratedFGD_CharlieAndFabric: sheen = lerp(R, y, F0), y = G/(1 - G); B = fabric Lambert",
+           "Unity-Technologies/Graphics com.unity.render-pipelines.high-definition Runtime/Material/"
+           "PreIntegratedFGD/preIntegratedFGD_CharlieFabricLambert.shader @ea9e22d4e47d291cadc670818287d912a8b60647, "
+           "ShaderLibrary/BSDF.hlsl (D_Charlie, V_Charlie, CharlieL, FabricLambert)",
+           mu_r(64, 64, Placement::center),
+           {charlie_moment("R: integral of f (1 - v.h)^5 cos(theta_i) dw_i (Charlie, Estevez-Kulla)", 1),
+            charlie_moment("G: E / (1 + E), E = integral of f cos(theta_i) dw_i", 2),
+            {"B: fabric Lambert albedo 1 - alpha/2", {{"fabric_lambert_albedo", 0}}}},
+           {{"sheen_shadowing", "estevez_kulla"}},
+           hdrp_charlie_model,
+           {checks::charlie_moment(0, 1, SheenShadowing::estevez_kulla, false),
+            checks::charlie_moment(1, 2, SheenShadowing::estevez_kulla, false), checks::fabric_lambert(2)}}}});
     all.push_back(
         {{"cycles",
           "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points), table_ggx_Eavg, the "
@@ -460,7 +538,9 @@ std::vector<PresetDeclaration> declare() {
            eevee_model,
            {checks::separable_at_one()}}}});
     all.push_back(
-        {{"gltf", "glTF-IBL-Sampler's LUTs: GGX split sum (RG) and Charlie (B), cell centres, 128x128 here",
+        {{"gltf",
+          "glTF-IBL-Sampler's LUTs: GGX split sum (RG) and Charlie (B), and the Sample Renderer's sheen albedo "
+          "lut_sheen_E (Estevez-Kulla), cell centres, 128x128 here",
           PixelType::half},
          {{"gltf_ggx", "glTF-IBL-Sampler lut_ggx: specular = F0 * R + G",
            "KhronosGroup/glTF-IBL-Sampler lib/source/shaders/filter.frag (LUT)",
@@ -477,7 +557,16 @@ std::vector<PresetDeclaration> declare() {
             charlie("E: integral of D_charlie V_neubelt cos(theta_i) dw_i, alpha = sheen_roughness^2")},
            {},
            tables::charlie_sheen_model(),
-           {checks::charlie_normal(2)}}}});
+           {checks::charlie_normal(2)}},
+          {"gltf_sheen_e",
+           "glTF Sample Renderer lut_sheen_E: E of the KHR_materials_sheen BRDF (Charlie D, V_Sheen) in R",
+           "KhronosGroup/glTF-Sample-Viewer assets/images/lut_sheen_E.png @481083eca92e8cca8ed2296cf811f22f5c61e4b0 "
+           "(read as albedoSheenScalingLUT(NdotV, sheenRoughness).r); brdf.glsl (D_Charlie, V_Sheen)",
+           mu_r(128, 128, Placement::center),
+           {charlie_moment("E: integral of D_charlie V_sheen cos(theta_i) dw_i, alpha = sheen_roughness^2", 0)},
+           {{"sheen_shadowing", "estevez_kulla"}},
+           gltf_sheen_model,
+           {checks::charlie_moment(0, 0, SheenShadowing::estevez_kulla, false)}}}});
     all.push_back(
         {{"godot",
           "Godot 4 Forward+'s DFG texture: 128x128 RGBA16F, multiscatter form with Schlick-Smith G, rows "
@@ -599,8 +688,9 @@ std::vector<PresetDeclaration> declare() {
                    {}});
     all.push_back({{"hdrp_ltc",
                     "Unity HDRP's LTC layers (64x64, columns roughness, rows sqrt(1 - cos theta), end points), "
-                    "refitted: GGX (alpha >= 1e-3) and Cook-Torrance (Beckmann with the V-cavity G, alpha >= "
-                    "0.002, with its error table); float, as the entries reach past the half range",
+                    "refitted: GGX (alpha >= 1e-3), Cook-Torrance (Beckmann with the V-cavity G, alpha >= "
+                    "0.002) and Charlie (Estevez-Kulla shadowing, alpha >= 0.002), each with its error table; "
+                    "float, as the entries reach past the half range",
                     PixelType::float32},
                    {}});
     return all;

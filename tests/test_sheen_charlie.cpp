@@ -1,0 +1,221 @@
+// Charlie sheen with the Estevez-Kulla shadowing (charlie_ek.h), its tables
+// through the generic lobe path and the engine tables built on them, against
+// the paper's constants, the half-vector rule, the Neubelt quadrature of
+// sheen_integrals.h and Monte Carlo.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "brdflut/catalogue.h"
+#include "brdflut/charlie_ek.h"
+#include "brdflut/exr.h"
+#include "brdflut/generate.h"
+#include "brdflut/generic_lobe.h"
+#include "brdflut/sheen_integrals.h"
+#include "brdflut/verify.h"
+#include "tables/sheen_charlie_check.h"
+#include "test_support.h"
+
+using namespace brdflut;
+
+namespace {
+
+TexelValue texel(const std::string& id, std::vector<double> coords, SheenShadowing s = SheenShadowing::estevez_kulla,
+                 Quality q = Quality::standard) {
+    const TableDefinition& d = find_table(id);
+    TableSettings st = default_settings(d);
+    st.quality = q;
+    if (!d.options.empty()) st.params["sheen_shadowing"] = to_string(s);
+    return d.prepare(st).evaluator->evaluate(coords.data(), 0);
+}
+
+// The paper's fit, typed from the paper: (a, b, c, d, e) at r = 0 and r = 1.
+double paper_L(double x, const double (&p)[5]) { return p[0] / (1.0 + p[1] * std::pow(x, p[2])) + p[3] * x + p[4]; }
+constexpr double kAtZero[5] = {25.3245, 3.32435, 0.16801, -1.27393, -4.85967};
+constexpr double kAtOne[5] = {21.5473, 3.82987, 0.19823, -1.97760, -4.32054};
+
+}  // namespace
+
+TEST(EstevezKulla, FitIsThePapersAtBothEndsAndInterpolatesInOneMinusRSquared) {
+    for (double x : {0.0, 0.1, 0.3, 0.5}) {
+        EXPECT_NEAR(estevez_kulla_L(x, 0.0), paper_L(x, kAtZero), 1e-13) << x;
+        EXPECT_NEAR(estevez_kulla_L(x, 1.0), paper_L(x, kAtOne), 1e-13) << x;
+        // HDRP's CharlieL: lerp(fit at 0, fit at 1, 1 - (1 - r)^2), coefficient by coefficient.
+        const double r = 0.35, w = 1.0 - (1.0 - r) * (1.0 - r);
+        double p[5];
+        for (int i = 0; i < 5; ++i) p[i] = kAtZero[i] + (kAtOne[i] - kAtZero[i]) * w;
+        EXPECT_NEAR(estevez_kulla_L(x, r), paper_L(x, p), 1e-12) << x;
+    }
+}
+
+TEST(EstevezKulla, LambdaIsContinuousWithItsSlopeAtOneHalf) {
+    for (double alpha : {0.0, 0.2, 0.7, 1.0}) {
+        const double h = 1e-6, m = 0.5;
+        const double at = estevez_kulla_lambda(m, alpha);
+        EXPECT_NEAR(estevez_kulla_lambda(std::nextafter(m, 0.0), alpha), at, 1e-12 * at) << alpha;
+        // One-sided slopes on either side agree (C1); the second branch
+        // reflects L about 1/2.
+        const double left = (at - estevez_kulla_lambda(m - h, alpha)) / h;
+        const double right = (estevez_kulla_lambda(m + h, alpha) - at) / h;
+        EXPECT_NEAR(left, right, 1e-4 * std::abs(left)) << alpha;
+        // Lambda decreases with mu: more shadowing at grazing angles.
+        EXPECT_GT(estevez_kulla_lambda(0.1, alpha), estevez_kulla_lambda(0.9, alpha));
+    }
+}
+
+TEST(EstevezKulla, TerminatorSofteningActsOnTheLightOnly) {
+    for (double alpha : {0.1, 0.6}) {
+        // No change at normal incidence; Lambda^(1 + 2 (1 - mu)^8) elsewhere.
+        EXPECT_DOUBLE_EQ(estevez_kulla_lambda_light(1.0, alpha, true), estevez_kulla_lambda(1.0, alpha));
+        const double mu = 0.2, l = estevez_kulla_lambda(mu, alpha);
+        EXPECT_NEAR(estevez_kulla_lambda_light(mu, alpha, true), std::pow(l, 1.0 + 2.0 * std::pow(0.8, 8)),
+                    1e-12 * std::pow(l, 1.4));
+        const Vec3 a = direction_from_mu(0.3), b{-std::sqrt(1.0 - 0.64), 0.0, 0.8};
+        const CharlieLobe plain(alpha, SheenShadowing::estevez_kulla), soft(alpha, SheenShadowing::estevez_kulla_soft);
+        EXPECT_NEAR(plain.f(a, b), plain.f(b, a), 1e-14 * plain.f(a, b)) << "reciprocal without softening";
+        EXPECT_GT(std::abs(soft.f(a, b) - soft.f(b, a)), 1e-6 * soft.f(a, b)) << "not reciprocal with it";
+    }
+}
+
+TEST(SheenCharlieTables, NeubeltThroughTheGenericPathIsTheSheenQuadrature) {
+    // Down to the smallest alpha of the default grid, (0.5/128)^2.
+    for (double alpha : {1.53e-5, 0.01, 0.1, 0.5, 1.0})
+        for (double mu : {0.5 / 128, 0.3, 0.8, 1.0}) {
+            const TexelValue t = texel("sheen_charlie_moments", {mu, alpha}, SheenShadowing::neubelt);
+            const Estimate<1> q = sheen_charlie_albedo(mu, alpha);
+            EXPECT_NEAR(t.value[0], q.value[0], t.error[0] + q.error[0] + 1e-12) << "mu " << mu << " alpha " << alpha;
+        }
+}
+
+TEST(SheenCharlieTables, HeldOutTexelsMatchTheHalfVectorRuleWithin1e7) {
+    // Off every default grid, down to the smallest alpha and grazing view.
+    double worst = 0.0;
+    for (SheenShadowing s : {SheenShadowing::estevez_kulla, SheenShadowing::estevez_kulla_soft})
+        for (double alpha : {0.0021, 0.083, 0.83})
+            for (double mu : {0.0043, 0.31, 0.97}) {
+                const TexelValue v = texel("sheen_charlie_moments", {mu, alpha}, s);
+                const std::array<double, 2> ref = tables::charlie_moments_by_half_vector(mu, alpha, s);
+                for (int c = 0; c < 2; ++c) {
+                    const double err = std::abs(v.value[c] - ref[c]);
+                    EXPECT_LE(err, v.error[c] + 1e-10) << to_string(s) << " mu " << mu << " alpha " << alpha << " c " << c;
+                    // 1e-7 for values up to 1, relative above (float's precision).
+                    const double scale = std::max(1.0, std::abs(v.value[c]));
+                    EXPECT_LE(err + std::abs(double(float(v.value[c])) - v.value[c]), 1e-7 * scale);
+                    EXPECT_LE(v.error[c], 1e-8 * scale);
+                    worst = std::max(worst, err);
+                }
+                EXPECT_DOUBLE_EQ(v.value[2], v.value[0] / (1.0 + v.value[0]));
+            }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", worst);
+    RecordProperty("worst_error_vs_half_vector_rule", text);
+}
+
+TEST(SheenCharlieTables, MonteCarloAgreesAtGrazingViewAndTheSmallestRoughness) {
+    std::uint64_t seed = 11;
+    for (SheenShadowing s : {SheenShadowing::estevez_kulla, SheenShadowing::estevez_kulla_soft, SheenShadowing::neubelt})
+        for (double alpha : {1e-3, 0.05, 0.6})
+            for (double mu : {0.5 / 128, 0.4, 1.0}) {
+                const Estimate<2> mc = generic_moments_mc<2>(
+                    CharlieLobe(alpha, s), mu,
+                    {MomentWeight{moment_weight::one}, MomentWeight{moment_weight::schlick}}, 40000, ++seed);
+                const TexelValue q = texel("sheen_charlie_moments", {mu, alpha}, s);
+                for (int c = 0; c < 2; ++c)
+                    EXPECT_NEAR(mc.value[c], q.value[c], 4.0 * mc.error[c] + q.error[c] + 1e-12)
+                        << to_string(s) << " alpha " << alpha << " mu " << mu << " channel " << c;
+            }
+    const Estimate<2> avg = generic_moment_average_mc<2>(
+        CharlieLobe(0.3, SheenShadowing::estevez_kulla),
+        {MomentWeight{moment_weight::one}, MomentWeight{moment_weight::schlick}}, 40000, 5);
+    const TexelValue q = texel("sheen_charlie_moments_avg", {0.3});
+    for (int c = 0; c < 2; ++c) EXPECT_NEAR(avg.value[c], q.value[c], 4.0 * avg.error[c] + q.error[c]) << c;
+}
+
+TEST(SheenCharlieTables, ErrorEstimatesCoverTheDifferenceToReferenceQuality) {
+    for (double alpha : {0.0, 1e-3, 0.02, 1.0})
+        for (double mu : {0.0, 0.5 / 128, 0.6}) {
+            const TexelValue s = texel("sheen_charlie_moments", {mu, alpha});
+            const TexelValue r = texel("sheen_charlie_moments", {mu, alpha}, SheenShadowing::estevez_kulla,
+                                       Quality::reference);
+            for (int c = 0; c < 2; ++c)
+                EXPECT_LE(std::abs(s.value[c] - r.value[c]), s.error[c] + r.error[c] + 1e-14)
+                    << "alpha " << alpha << " mu " << mu << " channel " << c;
+        }
+    // alpha = 0 is the limit 0; below 1e-4 the view is taken at 1e-4.
+    EXPECT_EQ(texel("sheen_charlie_moments", {0.5, 0.0}).value[0], 0.0);
+    EXPECT_EQ(texel("sheen_charlie_moments", {0.0, 0.4}).value[0], texel("sheen_charlie_moments", {1e-4, 0.4}).value[0]);
+}
+
+TEST(SheenCharlieTables, FabricLambertAlbedoIsOneMinusHalfAlpha) {
+    for (double alpha : {0.0, 0.3, 1.0})
+        for (double mu : {0.01, 0.7}) EXPECT_NEAR(texel("fabric_lambert_albedo", {mu, alpha}).value[0], 1.0 - 0.5 * alpha, 1e-9);
+}
+
+TEST(SheenCharlieTables, IndependentChecksPassAndCatchAWrongTable) {
+    struct Wrong : TexelEvaluator {
+        TexelValue evaluate(const double*, std::uint64_t) const override {
+            TexelValue v;
+            v.value = {0.25, 0.05, 0.5, 0.5};
+            return v;
+        }
+    } wrong;
+    for (const std::string id : {"sheen_charlie_moments", "sheen_charlie_moments_avg", "fabric_lambert_albedo",
+                                 "gltf_sheen_e", "hdrp_fgd_charlie_fabric", "unreal_cloth_energy"}) {
+        const TableDefinition& d = find_table(id);
+        const PreparedTable p = d.prepare(default_settings(d));
+        ASSERT_FALSE(d.checks.empty()) << id;
+        for (const ClosedFormCheck& c : d.checks) {
+            const auto [err, where] = c.run(*p.evaluator);
+            EXPECT_LE(err, c.tolerance) << id << ": " << c.name << " " << where;
+            EXPECT_GT(c.run(wrong).first, c.tolerance) << id << ": " << c.name;
+        }
+    }
+}
+
+TEST(SheenCharlieTables, SameBytesForAnyThreadCount) {
+    test::TempDir dir;
+    for (const std::string id : {"sheen_charlie_moments", "sheen_charlie_moments_avg", "fabric_lambert_albedo",
+                                 "hdrp_fgd_charlie_fabric", "unreal_cloth_energy", "gltf_sheen_e"}) {
+        TableSettings s = default_settings(find_table(id));
+        for (Axis& a : s.axes) a.count = 5;
+        for (int threads : {1, 2})
+            write_exr(dir / (id + std::to_string(threads) + ".exr"), test::generate_fresh(find_table(id), s, threads),
+                      PixelType::float32);
+        const std::string a = test::read_file(dir / (id + "1.exr"));
+        EXPECT_FALSE(a.empty());
+        EXPECT_EQ(a, test::read_file(dir / (id + "2.exr"))) << id;
+    }
+}
+
+TEST(SheenCharlieTables, EnginePresetsReadTheCoreTablesInTheirLayout) {
+    // HDRP: x = NdotV, y = perceptual roughness at centres; G = E/(1 + E).
+    const TableDefinition& hdrp = find_table("hdrp_fgd_charlie_fabric");
+    const PreparedTable ph = hdrp.prepare(default_settings(hdrp));
+    const double c[2] = {0.3, 0.6};
+    const TexelValue v = ph.evaluator->evaluate(c, 0);
+    const TexelValue core = texel("sheen_charlie_moments", {0.3, 0.36});
+    EXPECT_EQ(v.value[0], core.value[1]);
+    EXPECT_EQ(v.value[1], core.value[2]);
+    EXPECT_NEAR(v.value[2], 1.0 - 0.5 * 0.36, 1e-9);
+    // Unreal: alpha is the row coordinate, Neubelt's visibility.
+    const TableDefinition& ue = find_table("unreal_cloth_energy");
+    const TexelValue u = ue.prepare(default_settings(ue)).evaluator->evaluate(c, 0);
+    EXPECT_NEAR(u.value[0], sheen_charlie_albedo(0.3, 0.6).value[0], u.error[0] + 1e-9);
+}
+
+TEST(SheenCharlieLtc, HdrpCharlieTablesPassVerifyAndAreTheSameForAnyThreadCount) {
+    for (const char* id : {"hdrp_ltc_charlie", "hdrp_ltc_charlie_error"}) {
+        const TableDefinition& def = find_table(id);
+        const std::vector<CheckRow> rows = verify_table(def);
+        ASSERT_FALSE(rows.empty()) << id;
+        for (const CheckRow& r : rows) EXPECT_TRUE(r.pass) << id << ": " << r.check << " " << r.max_error << " " << r.where;
+        TableSettings s = default_settings(def);
+        s.axes[0].count = 5;
+        s.axes[1].count = 4;
+        const Table a = test::generate_fresh(def, s, 1), b = test::generate_fresh(def, s, 2);
+        EXPECT_EQ(a.values, b.values) << id;
+        EXPECT_EQ(a.method.dump(), b.method.dump()) << id;
+    }
+}
