@@ -333,7 +333,7 @@ ChannelRecipe charlie_moment(std::string meaning, int c) {
 
 // Unreal's cloth table indexes D_Charlie by the row coordinate itself
 // (D_Charlie(Roughness, NoH) takes 1/Roughness as the exponent).
-AxisSpec alpha_linear(int count) {
+AxisSpec charlie_alpha_linear(int count) {
     AxisSpec a = tables::alpha_axis(count);
     a.axis.warp = Warp::linear;
     a.meaning = "Charlie alpha, linear in the row coordinate (Unreal's D_Charlie(Roughness) exponent 1/Roughness)";
@@ -428,7 +428,7 @@ std::vector<PresetDeclaration> declare() {
            "UE5 ShadingEnergyClothSpecTexture: (E, F) of Charlie with Neubelt's visibility, alpha = row coordinate",
            "Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 2, SUBSTRATE_ENABLED: "
            "D_Charlie(Roughness) Vis_Ashikhmin), Engine/Source/Runtime/Renderer/Private/ShadingEnergyConservation.cpp",
-           {cos_theta(32, Placement::center), alpha_linear(32)},
+           {cos_theta(32, Placement::center), charlie_alpha_linear(32)},
            {charlie_moment("E: integral of D_charlie V_neubelt cos(theta_i) dw_i", 0),
             charlie_moment("F: integral of D_charlie V_neubelt (1 - v.h)^5 cos(theta_i) dw_i", 1)},
            {{"sheen_shadowing", "neubelt"}},
