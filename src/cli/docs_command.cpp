@@ -142,7 +142,7 @@ std::string presets_page() {
 std::string options_page() {
     std::ostringstream o;
     o << kGenerated << "# Model options\n\n"
-      << "The options of `brdflut generate` that change a model. Each name has one meaning and one help text "
+      << "The options of `generate` that change a model. Each name has one meaning and one help text "
          "across the catalogue; a table that does not take an option ignores it under `--all` and refuses it "
          "when named alone.\n\n";
     std::map<std::string, std::vector<const TableDefinition*>> users;

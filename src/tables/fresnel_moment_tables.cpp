@@ -359,6 +359,7 @@ void register_fresnel_moment_family(FamilyEntries& family) {
                              {"s: F0 -> F90 interpolation factor of the generalized Schlick Fresnel"},
                              cycles_model(false));
     s.preset = "cycles";
+    s.engine_source = cycles_model(false).at("engine_source").get<std::string>();
     s.checks = {cycles_normal_share(), cycles_half_vector(false)};
     out.push_back(std::move(s));
     TableDefinition si = make(Kind::cycles_ior, "cycles_ggx_gen_schlick_ior_s",
@@ -368,6 +369,7 @@ void register_fresnel_moment_family(FamilyEntries& family) {
                               {"s: F0 -> F90 interpolation factor following the dielectric Fresnel of index n"},
                               cycles_model(true));
     si.preset = "cycles";
+    si.engine_source = cycles_model(true).at("engine_source").get<std::string>();
     si.checks = {cycles_half_vector(true)};
     out.push_back(std::move(si));
 }
