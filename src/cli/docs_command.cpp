@@ -84,7 +84,7 @@ std::string tables_page() {
       << "Every table brdflut makes, family by family, as `brdflut list` prints them. A table's axes are its "
          "defaults: `generate` takes `--size`, `--range`, `--count`, `--placement`, `--warp`, `--order`, "
          "`--flip` and `--clamp` to lay it out as an engine does (see [axes](axes.md)). Every table has at "
-         "least one check that `brdflut verify` runs that is not Monte Carlo and not the table against "
+         "least one check that `verify` runs that is not Monte Carlo and not the table against "
          "itself; they are listed with their tolerances.\n\n";
     for (const TableFamily& f : table_families()) o << "- [" << f.title << "](#family-" << f.name << ")\n";
     o << "\n";
@@ -115,7 +115,7 @@ std::string tables_page() {
                 o << ".\n\n";
             }
             o << "Methods: quadrature" << (d.supports_monte_carlo ? ", Monte Carlo (`--method mc`)" : "")
-              << ". Checks run by `brdflut verify`:\n\n";
+              << ". Checks that `verify` runs:\n\n";
             for (const ClosedFormCheck& c : d.checks) o << "- " << c.name << " (tolerance " << number(c.tolerance) << ")\n";
             o << "\n";
         }
@@ -213,7 +213,7 @@ std::string axes_page() {
 std::string furnace_page() {
     std::ostringstream o;
     o << kGenerated << "# White-furnace models\n\n"
-      << "`brdflut furnace` integrates each model's albedo over its parameters from the catalogue's tables; "
+      << "`furnace` integrates each model's albedo over its parameters from the catalogue's tables; "
          "the models meant to conserve energy must return 1 within their tolerance.\n\n"
       << "| model | description | albedo table | average table | conserves (tolerance) |\n|---|---|---|---|---|\n";
     for (const FurnaceModel& m : furnace_models())
