@@ -389,18 +389,14 @@ const char* kCookTorranceSource =
     "BRDF/BRDF_CookTorrance.cs @85949ee7c210cef38bebb29810f2f7cad75c28f5 (the lobe; HDRP's own fit on this "
     "grid: Generated/LtcData.BRDF_CookTorrance.cs), LTCAreaLight.hlsl (the packing)";
 
-LtcTableSpec cook_torrance_ltc(LtcLayout layout, std::string id, std::string description, std::string layout_text,
-                               std::vector<std::string> channels) {
-    LtcTableSpec e;
-    e.id = std::move(id);
-    e.preset = "hdrp_ltc";
-    e.description = std::move(description);
-    e.layout = layout;
-    e.layout_text = std::move(layout_text);
-    e.channels = std::move(channels);
-    e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
-                   "perceptual roughness r; Beckmann alpha = max(r^2, 0.002)", "", "alpha"};
-    e.model = [](const std::map<std::string, std::string>&) {
+std::vector<TableDefinition> cook_torrance_ltc_layer() {
+    HdrpLtcLayer layer;
+    layer.name = "cook_torrance";
+    layer.matrix_description =
+        "HDRP LTC Cook-Torrance matrix (Beckmann, V-cavity G): the inverse divided by its m22 (alpha >= 0.002)";
+    layer.error_description = "Per-texel error of the Cook-Torrance LTC fit (the texels of hdrp_ltc_cook_torrance)";
+    layer.roughness_meaning = "perceptual roughness r; Beckmann alpha = max(r^2, 0.002)";
+    layer.model = [](const std::map<std::string, std::string>&) {
         nlohmann::json m = beckmann_model(Visibility::height_correlated);
         m["brdf"] = "Cook-Torrance: Beckmann microfacet with the V-cavity shadowing-masking, single scattering, "
                     "fitted by a linearly transformed cosine";
@@ -409,16 +405,15 @@ LtcTableSpec cook_torrance_ltc(LtcLayout layout, std::string id, std::string des
         m["roughness"] = "alpha = max(perceptual_roughness^2, 0.002) (the clamp of HDRP's BRDF_CookTorrance)";
         return m;
     };
-    e.engine_source = kCookTorranceSource;
-    e.norms_rule = "n0 by the generic lobe path (as beckmann_albedo, to 1e-8)";
-    e.report_table = "hdrp_ltc_cook_torrance_error";
+    layer.engine_source = kCookTorranceSource;
+    layer.norms_rule = "n0 by the generic lobe path (as beckmann_albedo, to 1e-8)";
     const std::uint64_t key = ltc_lobe_key("beckmann_v_cavity");
-    e.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
+    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
         const double alpha = std::max(alpha_from_perceptual(r), kCookTorranceMinAlpha);
         return LtcLobe(std::make_shared<const BeckmannLobe>(BeckmannLobe::v_cavity(alpha)), mu, alpha, key,
                        kBeckmannTableTolerance);
     };
-    return e;
+    return hdrp_ltc_layer(layer);
 }
 
 }  // namespace
@@ -448,19 +443,7 @@ void register_beckmann_family(FamilyEntries& family) {
                        {beckmann_alpha_axis()}, {"E_avg: 2 * integral of E(mu) mu dmu"}));
     for (TableDefinition& d : out)
         if (d.checks.empty()) d.checks = beckmann_checks(d.id);
-    out.push_back(ltc_table(cook_torrance_ltc(
-        LtcLayout::hdrp_matrix, "hdrp_ltc_cook_torrance",
-        "HDRP LTC Cook-Torrance matrix (Beckmann, V-cavity G): the inverse divided by its m22 (alpha >= 0.002)",
-        "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the transposed inverse",
-        {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)", "m11 (row 1, column 1)",
-         "m02 (row 0, column 2)"})));
-    out.push_back(ltc_table(cook_torrance_ltc(
-        LtcLayout::report, "hdrp_ltc_cook_torrance_error",
-        "Per-texel error of the Cook-Torrance LTC fit (the texels of hdrp_ltc_cook_torrance)",
-        "error report on the grid of hdrp_ltc_cook_torrance",
-        {"relative L3 error of n0 D against f cos over the sphere", "LTC mass below the horizon (of 1)",
-         "largest integrated-light error over the light bank, as a fraction of n0",
-         "mean integrated-light error over the light bank, as a fraction of n0"})));
+    for (TableDefinition& d : cook_torrance_ltc_layer()) out.push_back(std::move(d));
 
     const std::pair<std::string, std::string> hc{"visibility", "height_correlated"},
         sep{"visibility", "separable"};

@@ -441,6 +441,12 @@ const std::vector<std::string> kReportChannels = {
     "largest integrated-light error over the light bank, as a fraction of n0",
     "mean integrated-light error over the light bank, as a fraction of n0"};
 
+const char* kHdrpPacking =
+    "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the transposed inverse";
+const std::vector<std::string> kHdrpMatrixChannels = {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)",
+                                                       "m20 (row 2, column 0)", "m11 (row 1, column 1)",
+                                                       "m02 (row 0, column 2)"};
+
 const char* kHeitzShader = "shader mat3(vec3(R, 0, G), vec3(0, 1, 0), vec3(B, 0, A))";
 const std::vector<std::string> kHeitzMatrixChannels = {"m00 of M^-1 / M^-1[1][1] (glm m[col][row])",
                                                         "m02 (column 0, row 2)", "m20 (column 2, row 0)", "m22"};
@@ -535,10 +541,32 @@ void register_ltc_family(FamilyEntries& family) {
                                  "error report on the grid of ltc_eon", kReportChannels)));
     out.push_back(ltc_table(spec(K::ggx, Layout::hdrp_matrix, "hdrp_ltc_ggx", "hdrp_ltc",
                                  "HDRP LTC GGX matrix: the inverse divided by its m22 (alpha >= 1e-3)",
-                                 "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the "
-                                 "transposed inverse",
-                                 {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)",
-                                  "m11 (row 1, column 1)", "m02 (row 0, column 2)"})));
+                                 kHdrpPacking, kHdrpMatrixChannels)));
+}
+
+std::vector<TableDefinition> hdrp_ltc_layer(const HdrpLtcLayer& layer) {
+    const std::string matrix_id = "hdrp_ltc_" + layer.name, error_id = matrix_id + "_error";
+    const auto spec = [&](Layout layout, const std::string& id, const std::string& description,
+                          const std::string& layout_text, const std::vector<std::string>& channels) {
+        LtcTableSpec e;
+        e.id = id;
+        e.preset = "hdrp_ltc";
+        e.description = description;
+        e.layout = layout;
+        e.layout_text = layout_text;
+        e.channels = channels;
+        e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+                       layer.roughness_meaning, "", "alpha"};
+        e.model = layer.model;
+        e.engine_source = layer.engine_source;
+        e.norms_rule = layer.norms_rule;
+        e.report_table = error_id;
+        e.lobe = layer.lobe;
+        return ltc_table(std::move(e));
+    };
+    return {spec(Layout::hdrp_matrix, matrix_id, layer.matrix_description, kHdrpPacking, kHdrpMatrixChannels),
+            spec(Layout::report, error_id, layer.error_description, "error report on the grid of " + matrix_id,
+                 kReportChannels)};
 }
 
 }  // namespace brdflut

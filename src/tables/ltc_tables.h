@@ -59,6 +59,23 @@ struct LtcTableSpec {
 // spec's lobe for ltc_table_lobe.
 TableDefinition ltc_table(LtcTableSpec spec);
 
+// HDRP's LTC layer of a lobe fitted through the generic path: the matrix
+// table hdrp_ltc_<name> in HDRP's packing and its per-texel error table
+// hdrp_ltc_<name>_error, on HDRP's grid (64x64; roughness r = i/63 at end
+// points, the lobe's alpha = max(r^2, its floor); rows cos(theta) =
+// 1 - (j/63)^2), in the hdrp_ltc preset.
+struct HdrpLtcLayer {
+    std::string name;                // the ids' stem, e.g. "cook_torrance"
+    std::string matrix_description;  // the matrix table's one line
+    std::string error_description;   // the error table's one line
+    std::string roughness_meaning;   // the roughness axis's text, with the alpha floor
+    std::function<nlohmann::json(const std::map<std::string, std::string>& options)> model;
+    std::string engine_source;
+    std::string norms_rule;
+    LtcTexelLobe lobe;
+};
+std::vector<TableDefinition> hdrp_ltc_layer(const HdrpLtcLayer& layer);
+
 // The lobe that the catalogue's LTC table `def` fits at the texel
 // (roughness coordinate, cos_theta), with the table's options (missing ones
 // take their defaults). Throws Error for a table that is not an LTC table.

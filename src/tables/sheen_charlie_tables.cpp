@@ -342,34 +342,29 @@ const char* kHdrpCharlieSource =
     "BRDF_Charlie.cs @7a50b047ab6b8628a1433ffebc7fe048fc823a46 (the lobe; HDRP's own fit on this grid: "
     "Generated/LtcData.BRDF_Charlie.cs), LTCAreaLight.hlsl (the packing)";
 
-LtcTableSpec hdrp_charlie_ltc(LtcLayout layout, std::string id, std::string description, std::string layout_text,
-                              std::vector<std::string> channels) {
-    LtcTableSpec e;
-    e.id = std::move(id);
-    e.preset = "hdrp_ltc";
-    e.description = std::move(description);
-    e.layout = layout;
-    e.layout_text = std::move(layout_text);
-    e.channels = std::move(channels);
-    e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
-                   "perceptual roughness r; Charlie alpha = max(r^2, 0.002)", "", "alpha"};
-    e.model = [](const std::map<std::string, std::string>&) {
+std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
+    HdrpLtcLayer layer;
+    layer.name = "charlie";
+    layer.matrix_description =
+        "HDRP LTC Charlie matrix (Estevez-Kulla shadowing): the inverse divided by its m22 (alpha >= 0.002)";
+    layer.error_description = "Per-texel error of the Charlie (Estevez-Kulla) LTC fit (the texels of hdrp_ltc_charlie)";
+    layer.roughness_meaning = "perceptual roughness r; Charlie alpha = max(r^2, 0.002)";
+    layer.model = [](const std::map<std::string, std::string>&) {
         nlohmann::json m = charlie_model(SheenShadowing::estevez_kulla);
         m["brdf"] = "Charlie sheen with the Estevez-Kulla shadowing, no Fresnel, fitted by a linearly transformed "
                     "cosine";
         m["roughness"] = "alpha = max(perceptual_roughness^2, 0.002) (the clamp of HDRP's BRDF_Charlie)";
         return m;
     };
-    e.engine_source = kHdrpCharlieSource;
-    e.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
-    e.report_table = "hdrp_ltc_charlie_error";
+    layer.engine_source = kHdrpCharlieSource;
+    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
     const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
-    e.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
+    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
         const double alpha = std::max(alpha_from_perceptual(r), kHdrpLtcMinAlpha);
         return LtcLobe(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla),
                        std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
     };
-    return e;
+    return hdrp_ltc_layer(layer);
 }
 
 }  // namespace
@@ -404,19 +399,7 @@ void register_sheen_charlie_family(FamilyEntries& family) {
                        {tables::cos_theta_axis(32), charlie_alpha_axis(32)},
                        {"E: integral of (1 - alpha/2)/pi cos(theta_i) dw_i"}));
     out.back().checks = {fabric_check()};
-    out.push_back(ltc_table(hdrp_charlie_ltc(
-        LtcLayout::hdrp_matrix, "hdrp_ltc_charlie",
-        "HDRP LTC Charlie matrix (Estevez-Kulla shadowing): the inverse divided by its m22 (alpha >= 0.002)",
-        "Unity HDRP LTCSampleMatrix: invM._m22 = 1, invM._m00_m02_m11_m20 = RGBA of the transposed inverse",
-        {"m00 of M^-1 / M^-1[2][2] (row 0, column 0)", "m20 (row 2, column 0)", "m11 (row 1, column 1)",
-         "m02 (row 0, column 2)"})));
-    out.push_back(ltc_table(hdrp_charlie_ltc(
-        LtcLayout::report, "hdrp_ltc_charlie_error",
-        "Per-texel error of the Charlie (Estevez-Kulla) LTC fit (the texels of hdrp_ltc_charlie)",
-        "error report on the grid of hdrp_ltc_charlie",
-        {"relative L3 error of n0 D against f cos over the sphere", "LTC mass below the horizon (of 1)",
-         "largest integrated-light error over the light bank, as a fraction of n0",
-         "mean integrated-light error over the light bank, as a fraction of n0"})));
+    for (TableDefinition& d : hdrp_charlie_ltc_layer()) out.push_back(std::move(d));
 }
 
 }  // namespace brdflut
