@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "brdflut/generic_lobe.h"
+#include "brdflut/ggx_lobe.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/glass_integrals.h"
 #include "brdflut/lobe_integrals.h"
@@ -199,30 +200,6 @@ ClosedFormCheck disney_diffuse_smooth(int c) {
             }};
 }
 
-// GGX with Unreal's Vis_SmithJointApprox as a generic lobe (generic_lobe.h):
-// f = D(h) G2 / (4 mu_o mu_i), the peak at the mirror direction.
-class JointApproxGgxLobe final : public GenericLobe {
-public:
-    explicit JointApproxGgxLobe(double alpha) : ggx_{alpha} {}
-    double f(const Vec3& wo, const Vec3& wi) const override {
-        if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
-        const Vec3 h{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
-        const double cos_h = h.z / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
-        return ggx_.D(cos_h) * ggx_.G2_joint_approx(wo.z, wi.z) / (4.0 * wo.z * wi.z);
-    }
-    LobeHints hints(const Vec3& wo) const override {
-        LobeHints h;
-        h.has_peak = true;
-        h.peak = {-wo.x, -wo.y, wo.z};
-        h.width = 2.0 * ggx_.alpha;
-        h.aspect = std::min(1.0, wo.z + ggx_.alpha);
-        return h;
-    }
-
-private:
-    Ggx ggx_;
-};
-
 // A and B (channels 0, 1; axes cos_theta, roughness) against the generic lobe
 // path's quadrature of the same integrand, at roughness where the visibility
 // terms differ most from the height-correlated G2.
@@ -234,7 +211,8 @@ ClosedFormCheck joint_approx_generic() {
                     GenericOptions opt;
                     opt.abs_tol = 1e-10;
                     const Estimate<2> g =
-                        generic_moments<2>(JointApproxGgxLobe(p[1] * p[1]), p[0], kSplitSumWeights, opt);
+                        generic_moments<2>(GgxLobe(p[1] * p[1], Visibility::smith_joint_approx), p[0],
+                                           kSplitSumWeights, opt);
                     const TexelValue v = e.evaluate(p.data(), 0);
                     for (std::size_t c = 0; c < 2; ++c) {
                         const double err = std::abs(v.value[c] - g.value[c]);
