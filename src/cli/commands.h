@@ -15,13 +15,18 @@ namespace brdflut::cli {
 
 int run_list(bool presets_only, bool json);
 
+// The `--help` text of each command, in the order `brdflut --help` lists
+// them (name, text).
+using CommandHelp = std::vector<std::pair<std::string, std::string>>;
+
 // The reference pages of docs/reference (file name -> Markdown), rendered
-// from the catalogue, and the catalogue as JSON (`list --json`).
-std::map<std::string, std::string> reference_pages();
+// from the catalogue and the command line's own help, and the catalogue as
+// JSON (`list --json`).
+std::map<std::string, std::string> reference_pages(const CommandHelp& help);
 nlohmann::json catalogue_json();
 // Writes the pages to `output`, or with check compares them with the files
 // there (exit 1 naming the stale pages).
-int run_docs(const std::string& output, bool check);
+int run_docs(const std::string& output, bool check, const CommandHelp& help);
 
 struct GenerateArgs {
     std::vector<std::string> ids;

@@ -237,9 +237,18 @@ std::string conductors_page() {
     return o.str();
 }
 
+std::string commands_page(const CommandHelp& help) {
+    std::ostringstream o;
+    o << kGenerated << "# Commands\n\n"
+      << "Each command's `--help`, as the tool prints it.\n";
+    for (const auto& [name, text] : help) o << "\n## " << (name.empty() ? "brdflut" : name) << "\n\n```text\n" << text << "```\n";
+    return o.str();
+}
+
 std::string index_page() {
     std::ostringstream o;
     o << kGenerated << "# Reference\n\n"
+      << "- [Commands](commands.md): every command and option, as `--help` prints them\n"
       << "- [Tables](tables.md): every table, family by family, with axes, channels, options and checks\n"
       << "- [Engine presets](presets.md)\n"
       << "- [Model options](options.md)\n"
@@ -253,8 +262,9 @@ std::string index_page() {
 
 }  // namespace
 
-std::map<std::string, std::string> reference_pages() {
-    return {{"README.md", index_page()},   {"tables.md", tables_page()},     {"presets.md", presets_page()},
+std::map<std::string, std::string> reference_pages(const CommandHelp& help) {
+    return {{"README.md", index_page()},   {"commands.md", commands_page(help)},
+            {"tables.md", tables_page()},  {"presets.md", presets_page()},
             {"options.md", options_page()}, {"quality.md", quality_page()},   {"axes.md", axes_page()},
             {"furnace.md", furnace_page()}, {"conductors.md", conductors_page()}};
 }
@@ -298,9 +308,9 @@ nlohmann::json catalogue_json() {
     return j;
 }
 
-int run_docs(const std::string& output, bool check) {
+int run_docs(const std::string& output, bool check, const CommandHelp& help) {
     namespace fs = std::filesystem;
-    const std::map<std::string, std::string> pages = reference_pages();
+    const std::map<std::string, std::string> pages = reference_pages(help);
     if (check) {
         std::vector<std::string> stale;
         for (const auto& [name, text] : pages) {

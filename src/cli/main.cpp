@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     // is reported, instead of killing the process mid-file.
     std::signal(SIGXFSZ, SIG_IGN);
 
-    CLI::App app{"brdflut: precomputed BRDF lookup tables, exact to storage precision"};
+    CLI::App app{"brdflut: precomputed BRDF lookup tables, exact to storage precision", "brdflut"};
     app.set_version_flag("--version", std::string(kName) + " " + kVersion);
     app.require_subcommand(1);
     app.footer("Run 'brdflut <command> --help' for the options of a command.");
@@ -209,7 +209,13 @@ int main(int argc, char** argv) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);
         }
-        if (app.got_subcommand(docs)) return run_docs(docs_output, docs_check);
+        if (app.got_subcommand(docs)) {
+            // The formatter directly: App::help() would print the selected
+            // subcommand's (docs) help for the whole tool.
+            CommandHelp help{{"", app.get_formatter()->make_help(&app, "brdflut", CLI::AppFormatMode::Normal)}};
+            for (const CLI::App* sub : app.get_subcommands({})) help.emplace_back(sub->get_name(), sub->help("brdflut"));
+            return run_docs(docs_output, docs_check, help);
+        }
         return run_list(list_presets, list_json);
     } catch (const Error& e) {
         std::cerr << "brdflut: error: " << e.what() << "\n";
