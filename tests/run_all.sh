@@ -2,10 +2,11 @@
 # The whole test suite, after the README's main command has built ./build:
 #   1. the unit, table and command-line tests of the Release build;
 #   2. the same suite built with AddressSanitizer and UndefinedBehaviorSanitizer
-#      (CMake preset `sanitize`);
-#   3. a bounded libFuzzer run on every table reader (preset `fuzz`, clang;
-#      the first input byte picks the read options, see fuzz_read_table.cpp),
-#      seeded from tests/fuzz/corpus (BRDFLUT_FUZZ_SECONDS, default 60).
+#      (CMake preset `sanitize`, clang);
+#   3. a bounded libFuzzer run on every table reader, built in the same
+#      sanitizer tree (the first input byte picks the read options, see
+#      fuzz_read_table.cpp), seeded from tests/fuzz/corpus
+#      (BRDFLUT_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=${BRDFLUT_JOBS:-2}
@@ -26,7 +27,7 @@ echo "== Release build: ctest"
 ctest --test-dir build --output-on-failure -j"$jobs" | tee "$log/release.txt"
 lap "Release ctest"
 
-echo "== AddressSanitizer + UndefinedBehaviorSanitizer: build and ctest"
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer (and the fuzzer): build and ctest"
 cmake --preset sanitize > "$log/sanitize-configure.txt"
 cmake --build --preset sanitize -j"$jobs" > "$log/sanitize-build.txt" || { tail -n 50 "$log/sanitize-build.txt"; exit 1; }
 lap "sanitizer configure and build"
@@ -34,11 +35,8 @@ ctest --preset sanitize -j"$jobs" | tee "$log/sanitize.txt"
 lap "sanitizer ctest"
 
 echo "== libFuzzer on the table readers"
-cmake --preset fuzz > "$log/fuzz-configure.txt"
-cmake --build --preset fuzz -j"$jobs" > "$log/fuzz-build.txt" || { tail -n 50 "$log/fuzz-build.txt"; exit 1; }
-lap "fuzzer configure and build"
 mkdir -p "$log/corpus"
-./build-fuzz/fuzz_read_table -max_total_time="${BRDFLUT_FUZZ_SECONDS:-60}" -seed=1 -timeout=10 \
+./build-sanitize/fuzz_read_table -max_total_time="${BRDFLUT_FUZZ_SECONDS:-60}" -seed=1 -timeout=10 \
     -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 "$log/corpus" tests/fuzz/corpus 2> "$log/fuzz.txt" ||
     { tail -n 60 "$log/fuzz.txt"; exit 1; }
 grep -E "^(Done|stat::number_of_executed_units)" "$log/fuzz.txt" || true

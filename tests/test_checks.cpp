@@ -164,6 +164,18 @@ TEST(Sample, BilinearLikeAGpuWithClampToEdge) {
     EXPECT_DOUBLE_EQ(sample_lut(img, d, {0.0, 1.0}, 0), stored(0, 7, 0));
 }
 
+TEST(CliChecks, SampleNotesOnlyPointsOutsideADecreasingAxis) {
+    // EEVEE's rows run from cos_theta = 1 down to 0 (min > max).
+    TempDir dir;
+    ASSERT_EQ(run_cli("generate eevee_brdf_ggx --size 8 -o .", dir).exit_code, 0);
+    const auto inside = run_cli("sample eevee_brdf_ggx.exr --at roughness=0.5,cos_theta=0.5", dir);
+    EXPECT_EQ(inside.exit_code, 0) << inside.err;
+    EXPECT_EQ(inside.err.find("outside the table's range"), std::string::npos) << inside.err;
+    const auto outside = run_cli("sample eevee_brdf_ggx.exr --at roughness=0.5,cos_theta=1.5", dir);
+    EXPECT_EQ(outside.exit_code, 0) << outside.err;
+    EXPECT_NE(outside.err.find("cos_theta = 1.5 is outside the table's range [1, 0]"), std::string::npos) << outside.err;
+}
+
 TEST(CliChecks, VerifyPrintsOneRowPerCheckAndJson) {
     TempDir dir;
     const auto r = run_cli("verify fresnel_dielectric_avg dipole_total", dir);

@@ -79,7 +79,8 @@ Estimate<2> outgoing_route(double mu_o, double alpha, double eta, Visibility vis
             return std::array<double, 1>{e.value[0]};
         };
         double total = 0.0, err = 0.0;
-        for (auto [a, b] : {std::pair{0.0, peak}, std::pair{peak, 1.0}}) {
+        for (const auto& piece : {std::pair{0.0, peak}, std::pair{peak, 1.0}}) {
+            const double a = piece.first, b = piece.second;  // plain names: lambdas capture them
             if (!(b > a)) continue;
             // smoothstep in each piece: dense at the peak and at the ends.
             const Estimate<1> e = integrate_adaptive<1>(

@@ -280,8 +280,8 @@ int run_sample(const SampleArgs& a) {
         if (std::isnan(params[i])) throw Error("--at must give a value for axis '" + axes[i].name + "'");
     for (std::size_t c = 0; c < d.image.channel_names.size(); ++c)
         std::printf("%s = %.9g\n", d.image.channel_names[c].c_str(), sample_lut(d.image, d.lut, params, static_cast<int>(c)));
-    for (std::size_t i = 0; i < axes.size(); ++i)
-        if (params[i] < axes[i].min || params[i] > axes[i].max)
+    for (std::size_t i = 0; i < axes.size(); ++i)  // a decreasing axis has min > max
+        if (params[i] < std::min(axes[i].min, axes[i].max) || params[i] > std::max(axes[i].min, axes[i].max))
             std::fprintf(stderr, "note: %s = %g is outside the table's range [%g, %g]; clamped to the edge\n",
                          axes[i].name.c_str(), params[i], axes[i].min, axes[i].max);
     return 0;

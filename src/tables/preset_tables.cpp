@@ -20,6 +20,7 @@
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/glass_integrals.h"
 #include "brdflut/lobe_integrals.h"
+#include "brdflut/ltc_fit.h"
 #include "brdflut/sheen_integrals.h"
 #include "tables/checks.h"
 #include "tables/recipe.h"
@@ -291,6 +292,23 @@ ClosedFormCheck glass_average_index_matched() {
                 });
             }};
 }
+// The F82-tint moment C = integral of f (v.h)(1 - v.h)^6 cos in channel c
+// of a table with axes (roughness r, cos_theta), alpha = r^2, against the
+// half-vector quadrature of ggx_lobe.h, at points no other check uses
+// (inside the layout's clamps, which the layout tests cover).
+ClosedFormCheck f82_moment_half_vector(int c) {
+    return {"C vs the half-vector quadrature (u = t^2/(alpha^2 + t^2), azimuth clipped exactly)", kGgx + 1e-11,
+            [c](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.004, 0.13, 0.55, 1.0}, {0.001, 0.07, 0.4, 1.0}), c,
+                                  [](const auto& p) {
+                                      const double alpha = p[0] * p[0], mu = p[1];
+                                      return ggx_moments_half_vector<1>(
+                                          mu, alpha, Visibility::height_correlated, GgxLobeKind::brdf,
+                                          std::array<MomentWeight, 1>{MomentWeight{moment_weight::f82}})[0];
+                                  });
+            }};
+}
+
 }  // namespace checks
 
 using tables::ChannelRecipe;
@@ -657,13 +675,34 @@ std::vector<PresetDeclaration> declare() {
            {checks::split_at_one(0, 1, false)}}}});
     // The LTC presets' tables are fits (ltc_tables.cpp), which name these
     // presets.
+    // Beside ltc_2: the F82-tint moment on its grid, so that an area light
+    // on an F82 metal gets F0 (n0 - n1) + n1 - b C instead of Schlick's edge.
+    AxisSpec ltc_roughness = roughness(64, Placement::endpoints);
+    ltc_roughness.axis.clamp_lo = std::sqrt(kLtcMinAlpha);
+    ltc_roughness.meaning = "perceptual roughness r; GGX alpha = max(r^2, 1e-5), as ltc_2";
+    AxisSpec ltc_view = cos_theta(64, Placement::endpoints, Warp::square);
+    ltc_view.axis.min = 1.0;
+    ltc_view.axis.max = 0.0;
+    ltc_view.axis.clamp_lo = kLtcMinMu;
+    ltc_view.meaning = "cos(theta_o); rows at u = sqrt(1 - cos(theta_o)); mu >= cos(1.57), as ltc_2";
     all.push_back({{"ltc",
                     "Heitz 2016 LTC area-light tables ltc_1, ltc_2 as three.js, EEVEE and Godot load them "
                     "(64x64, rows sqrt(1 - cos theta), columns roughness, end points), refitted, with the "
-                    "per-texel error table ltc_ggx_error; the same layout fitted to the Charlie sheen "
-                    "(ltc_sheen_charlie, _norm, _error) and EON diffuse (ltc_eon, _norm, _error) lobes",
+                    "per-texel error table ltc_ggx_error and the F82-tint moment ltc_f82; the same layout "
+                    "fitted to the Charlie sheen (ltc_sheen_charlie, _norm, _error) and EON diffuse (ltc_eon, "
+                    "_norm, _error) lobes",
                     PixelType::float32},
-                   {}});
+                   {{"ltc_f82",
+                     "F82-tint moment on ltc_2's grid: an area light on an F82 metal is (F0 (n0 - n1) + n1 - b C) "
+                     "times the LTC integral",
+                     "selfshadow/ltc_code fit/fitLTC.cpp (ltc_2's grid and clamps); Hoffman 2023, "
+                     "\"Generalization of Adobe's Fresnel Model\" (F82-tint)",
+                     {ltc_roughness, ltc_view},
+                     {{"C: integral of f (v.h) (1 - v.h)^6 cos(theta_i) dw_i (GGX, height-correlated, F = 1)",
+                       {{"ggx_dfg_f82", 2}}}},
+                     {},
+                     ggx_model(Visibility::height_correlated),
+                     {checks::f82_moment_half_vector(0)}}}});
     all.push_back({{"hdrp_ltc",
                     "Unity HDRP's LTC layers (64x64, columns roughness, rows sqrt(1 - cos theta), end points), "
                     "refitted: GGX (alpha >= 1e-3), Cook-Torrance (Beckmann with the V-cavity G, alpha >= "

@@ -1,7 +1,7 @@
 // libFuzzer target: every table reader (OpenEXR, DDS, KTX2, PNG, NumPy .npy,
 // arrays in source files, and the brdflut metadata JSON) must turn any input
 // into either a table or a brdflut::RuntimeError, never a crash, a hang or
-// another exception. Build with the `fuzz` CMake preset.
+// another exception. Built in the `sanitize` CMake preset (clang).
 //
 // The first input byte picks the read options, the rest is the file:
 //   bits 0-1: decode none, linear, srgb, or (3) read as a source file with
