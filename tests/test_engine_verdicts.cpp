@@ -340,3 +340,35 @@ TEST(EngineVerdicts, GltfGgxDepartsAtGrazingViewCharlieIsBiased) {
     EXPECT_GT(above, 0.70);
     EXPECT_LT(above, 0.75);
 }
+
+// The glTF Sample Viewer's lut_sheen_E.png (every 32nd texel) is not the
+// directional albedo the preset defines (D_Charlie with the Estevez-Kulla
+// V_Sheen, alpha = r^2): it stays below 1 where that albedo grows beyond 1
+// (smooth, grazing), and where the albedo is at most 1 the file is above it
+// at all but a few texels, by up to 0.81. Flipping its rows or transposing
+// it fits worse.
+TEST(EngineVerdicts, GltfSheenELutIsNotThePresetsAlbedo) {
+    const std::string grid = " --size 32 --shift cos_theta=0.015625 --shift roughness=0.015625 --worst 1024";
+    const Report r = compare(fixture("gltf/lut_sheen_E_32.npy") + " --as gltf_sheen_e" + grid);
+    ASSERT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.json.at("verdict").at("failed_values"), 1024);
+    int below = 0, above = 0;
+    double most = 0.0;
+    for (const nlohmann::json& t : r.json.at("worst")) {
+        const double stored = t.at("stored").get<double>(), exact = t.at("exact").get<double>();
+        EXPECT_LT(stored, 1.0);
+        if (exact > 1.0) continue;
+        ++below;
+        if (stored > exact) ++above;
+        most = std::max(most, stored - exact);
+    }
+    EXPECT_GE(below, 1000);
+    EXPECT_GE(above, below - 10);
+    EXPECT_GT(most, 0.78);
+    EXPECT_LT(most, 0.84);
+    const double rms = r.json.at("channels")[0].at("rms_error").get<double>();
+    for (const char* other : {" --flip roughness", " --order roughness,cos_theta"}) {
+        const Report o = compare(fixture("gltf/lut_sheen_E_32.npy") + " --as gltf_sheen_e" + grid + other);
+        EXPECT_GT(o.json.at("channels")[0].at("rms_error").get<double>(), rms) << other;
+    }
+}
