@@ -5,15 +5,21 @@
 // helpers on functions they reproduce, and the inversion's round trip.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include <nlohmann/json.hpp>
 
 #include "brdflut/beam_diffusion.h"
 #include "brdflut/catalogue.h"
 #include "brdflut/fresnel.h"
 #include "brdflut/math.h"
 #include "brdflut/quadrature.h"
+#include "test_support.h"
 
 using namespace brdflut;
+using brdflut::test::run_cli;
+using brdflut::test::TempDir;
 
 namespace {
 
@@ -193,4 +199,38 @@ TEST(BeamDiffusion, PbrtConstructionTruncatesRhoEffAtItsLastRadius) {
     const double e = exact->evaluate(&one, 0).value[0], p = pbrt->evaluate(&one, 0).value[0];
     EXPECT_GT(e - p, 0.005);
     EXPECT_LT(e - p, 0.03);
+}
+
+TEST(BeamDiffusion, CompareReportsTheRelativeErrorOfPbrtsTable) {
+    // compare --relative on pbrt's rho_eff against the largest relative
+    // difference of the two constructions' evaluators at the same albedos.
+    TempDir dir;
+    const auto gen = run_cli("generate beam_diffusion_rho_eff --construction pbrt_midpoint --size 9 -q -o '" +
+                                 (dir / "p") + "'", dir);
+    ASSERT_EQ(gen.exit_code, 0) << gen.err;
+    const auto cmp = run_cli("compare '" + (dir / "p/beam_diffusion_rho_eff.exr") +
+                                 "' --as beam_diffusion_rho_eff --size 9 --relative --json", dir);
+    ASSERT_EQ(cmp.exit_code, 1) << cmp.err;  // pbrt's values are not the exact ones
+    const auto j = nlohmann::json::parse(cmp.out);
+    const auto exact = evaluator("beam_diffusion_rho_eff");
+    const auto pbrt = evaluator("beam_diffusion_rho_eff", "pbrt_midpoint");
+    Axis a = find_table("beam_diffusion_rho_eff").axes[0].axis;
+    a.count = 9;
+    for (std::size_t c = 0; c < 3; ++c) {
+        double worst = 0.0;
+        for (int i = 0; i < 9; ++i) {
+            const double rho = a.value(i);
+            const double e = exact->evaluate(&rho, 0).value[c];
+            const double p = static_cast<float>(pbrt->evaluate(&rho, 0).value[c]);
+            if (e != 0.0) worst = std::max(worst, std::abs(p - e) / std::abs(e));
+        }
+        const double reported = j.at("channels").at(c).at("max_rel_error").get<double>();
+        EXPECT_GT(reported, 1e-4) << c;
+        EXPECT_NEAR(reported, worst, 1e-6 * worst) << c;
+    }
+    // The text report names where the largest relative error lies.
+    const auto text = run_cli("compare '" + (dir / "p/beam_diffusion_rho_eff.exr") +
+                                  "' --as beam_diffusion_rho_eff --size 9 --relative", dir);
+    EXPECT_NE(text.out.find("max |error|/|exact|"), std::string::npos);
+    EXPECT_NE(text.out.find("albedo = 1"), std::string::npos) << text.out;
 }
