@@ -67,16 +67,28 @@ const std::vector<WarpDef> kWarps = {
          return {};
      },
      "(sqrt(max((v - 1.0) / (v + 1.0), 0.0)) - lo) / (hi - lo)", ior_z},
+    {Warp::saturating_exp, "saturating_exp", "min + (max - min) (1 - e^(-8 u)) / (1 - e^(-8))",
+     "single-scattering albedos of pbrt-v4's BSSRDFTable (100 end points from 0 to 1, dense near 1)",
+     [](double u, double lo, double hi) { return lo + (hi - lo) * (std::expm1(-8.0 * u) / std::expm1(-8.0)); },
+     [](double v, double lo, double hi) { return -std::log1p((v - lo) / (hi - lo) * std::expm1(-8.0)) / 8.0; },
+     [](double lo, double hi) -> std::string {
+         if (std::string why = finite_range(lo, hi); !why.empty()) return why;
+         return {};
+     },
+     "-log(max(1.0 - (v - lo) / (hi - lo) * 0.9996645373720975, 1e-30)) / 8.0"},
 };
 
 }  // namespace
 
-std::string_view to_string(Placement p) { return p == Placement::center ? "center" : "endpoints"; }
+std::string_view to_string(Placement p) {
+    return p == Placement::center ? "center" : p == Placement::endpoints ? "endpoints" : "zero_then_endpoints";
+}
 
 Placement placement_from_string(std::string_view s) {
     if (s == "center") return Placement::center;
     if (s == "endpoints") return Placement::endpoints;
-    throw Error("placement '" + std::string(s) + "' is not known; allowed: center, endpoints");
+    if (s == "zero_then_endpoints") return Placement::zero_then_endpoints;
+    throw Error("placement '" + std::string(s) + "' is not known; allowed: center, endpoints, zero_then_endpoints");
 }
 
 const std::vector<WarpDef>& warps() { return kWarps; }
@@ -101,6 +113,10 @@ Warp warp_from_string(std::string_view s) {
 double Axis::u(int i) const {
     const int j = flip ? count - 1 - i : i;
     if (placement == Placement::center) return (j + 0.5 + shift) / count;
+    if (placement == Placement::zero_then_endpoints) {
+        if (j == 0) return warp_def(warp).u_of_value(0.0, min, max);
+        return count > 2 ? (j - 1 + shift) / (count - 2) : 0.0;  // count 2: 0 and min
+    }
     return count > 1 ? (j + shift) / (count - 1) : 0.0;
 }
 
@@ -113,13 +129,23 @@ double Axis::value_at_u(double t) const {
 
 double Axis::clamped(double v) const { return std::min(std::max(v, clamp_lo), clamp_hi); }
 
-double Axis::value(int i) const { return clamped(value_at_u(u(i))); }
+double Axis::value(int i) const {
+    if (placement == Placement::zero_then_endpoints && (flip ? count - 1 - i : i) == 0) return clamped(0.0);
+    return clamped(value_at_u(u(i)));
+}
 
 double Axis::u_of_value(double v) const { return warp_def(warp).u_of_value(clamped(v), min, max); }
 
 double Axis::position_of_value(double v) const {
-    const double t = u_of_value(v);
-    const double p = placement == Placement::center ? t * count - 0.5 - shift : t * (count - 1) - shift;
+    double p = 0.0;
+    if (placement == Placement::zero_then_endpoints && clamped(v) <= min) {
+        p = clamped(v) / min;  // linear between the parameter 0 (texel 0) and min (texel 1)
+    } else {
+        const double t = u_of_value(v);
+        p = placement == Placement::center      ? t * count - 0.5 - shift
+            : placement == Placement::endpoints ? t * (count - 1) - shift
+                                                : 1.0 + t * (count - 2) - shift;
+    }
     return flip ? count - 1 - p : p;
 }
 
@@ -139,6 +165,12 @@ void Axis::validate() const {
     }
     if (placement == Placement::endpoints && count < 2)
         fail("placement 'endpoints' needs a count of at least 2 (got " + std::to_string(count) + ")");
+    if (placement == Placement::zero_then_endpoints) {
+        if (count < 2)
+            fail("placement 'zero_then_endpoints' needs a count of at least 2 (got " + std::to_string(count) + ")");
+        if (!(min > 0.0) || !(max > min))
+            fail("placement 'zero_then_endpoints' needs 0 < min < max (got " + number(min) + ":" + number(max) + ")");
+    }
     if (const std::string why = warp_def(warp).range_problem(min, max); !why.empty()) fail(why);
     if (std::isnan(clamp_lo) || std::isnan(clamp_hi) || !(clamp_lo <= clamp_hi))
         fail("clamp " + number(clamp_lo) + ":" + number(clamp_hi) + " is not valid; allowed: LO:HI with LO <= HI");

@@ -189,6 +189,19 @@ const std::string& param(const TableSettings& s, const std::string& name) {
     return it->second;
 }
 
+double parse_number(const std::string& option, const std::string& s) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(s, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (s.empty() || used != s.size() || !std::isfinite(v))
+        throw Error("--" + option + " '" + s + "' is not a finite number");
+    return v;
+}
+
 nlohmann::json quadrature_method(const std::string& rule, double abs_tol) {
     return {{"name", "quadrature"}, {"rule", rule}, {"abs_tolerance", abs_tol}};
 }

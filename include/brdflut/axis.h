@@ -7,6 +7,11 @@
 //   flip       j = count - 1 - i when the axis is stored in reverse, else j = i
 //   placement  center     u = (j + 0.5 + shift) / count
 //              endpoints  u = (j + shift) / (count - 1)   (count >= 2)
+//              zero_then_endpoints  j = 0 holds the parameter 0; j >= 1 the
+//                         end points u = (j - 1 + shift) / (count - 2) of
+//                         [min, max], 0 < min < max (count >= 2, count 2 holds
+//                         0 and min; with the log warp, pbrt-v4's radii 0, r_1,
+//                         r_1 q, ..)
 //   shift      0, or the texels by which a generator misplaced its grid
 //              (Filament's rows hold r = (j + 1.5)/h: shift 1 with a clamp)
 //   warp       value = W(u; min, max), one entry of the warp registry below;
@@ -15,7 +20,8 @@
 //
 // The inverse, used to sample a table at a parameter p:
 //   u = W^-1(clamp(p)), position = u count - 0.5 - shift (center) or
-//   u (count - 1) - shift (endpoints), reversed when flipped; texel i's centre is at position i,
+//   u (count - 1) - shift (endpoints), 1 + u (count - 2) - shift above min and
+//   p / min at or below it (zero_then_endpoints), reversed when flipped; texel i's centre is at position i,
 //   and the texture coordinate of a GPU sampler is (position + 0.5) / count.
 #pragma once
 
@@ -26,14 +32,14 @@
 
 namespace brdflut {
 
-enum class Placement { center, endpoints };
+enum class Placement { center, endpoints, zero_then_endpoints };
 std::string_view to_string(Placement p);
 Placement placement_from_string(std::string_view s);  // throws brdflut::Error
 
 // How the normalized coordinate u in [0, 1] maps to a parameter value. Each
 // warp is one entry of warps(): to add a mapping, add an enumerator here and
 // its entry in src/axis.cpp.
-enum class Warp { linear, square, sqrt, log, ior_z };
+enum class Warp { linear, square, sqrt, log, ior_z, saturating_exp };
 
 struct WarpDef {
     Warp warp;
@@ -69,7 +75,9 @@ struct Axis {
     double clamp_lo = -std::numeric_limits<double>::infinity();
     double clamp_hi = std::numeric_limits<double>::infinity();
 
-    double u(int i) const;              // normalized coordinate of storage position i
+    // Normalized coordinate of storage position i (zero_then_endpoints: the
+    // warp's inverse at 0 for grid index 0, -inf for the log warp).
+    double u(int i) const;
     double value(int i) const;          // parameter of storage position i (clamped)
     double value_at_u(double u) const;  // the warp alone, exact at u = 0 and 1
     double clamped(double v) const;     // v clamped to [clamp_lo, clamp_hi]

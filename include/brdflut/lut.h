@@ -56,6 +56,12 @@ struct ChannelError {
     std::string channel;  // file channel name
     double max_abs = 0.0;
     double rms = 0.0;
+    // Largest |stored - exact| / |exact| over the values the file's pixel
+    // type resolves to 0.1% (one storage step at most 1e-3 |exact|: not the
+    // subnormal or coarsely quantized ones), and the axis values (storage
+    // order) where it occurs; 0 and empty when there is none.
+    double max_rel = 0.0;
+    std::vector<double> max_rel_params;
 };
 
 struct TexelError {

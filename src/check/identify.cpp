@@ -113,6 +113,7 @@ std::vector<AxisCandidate> axis_candidates(const AxisSpec& spec, int count, cons
     std::vector<AxisCandidate> all;
     for (Placement p : {def.placement, def.placement == Placement::center ? Placement::endpoints : Placement::center}) {
         if (p == Placement::endpoints && count < 2) continue;
+        if (p == Placement::zero_then_endpoints && count < 2) continue;
         for (const WarpDef& wd : warps()) {
             for (bool reversed : {false, true}) {
                 const double lo = reversed ? def.max : def.min, hi = reversed ? def.min : def.max;
@@ -381,6 +382,7 @@ std::string uniform_in(const Axis& a) {
         case Warp::sqrt: return "(" + norm() + ")^2";
         case Warp::log: return "log " + x;
         case Warp::ior_z: return "z = sqrt((" + x + " - 1)/(" + x + " + 1))";
+        case Warp::saturating_exp: return "-ln(1 - (1 - e^-8) " + norm() + ")/8";
     }
     return x;
 }

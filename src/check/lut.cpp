@@ -204,6 +204,11 @@ CompareReport compare_values(const ExrImage& img, const Table& exact, std::size_
             const double a = std::isfinite(err) ? std::abs(err) : HUGE_VAL;
             ChannelError& ce = rep.channels[c];
             ce.max_abs = std::max(ce.max_abs, a);
+            if (want != 0.0 && storage_step(img, k * nfile + c, want) <= 1e-3 * std::abs(want) &&
+                (a / std::abs(want) > ce.max_rel || (ce.max_rel_params.empty() && a == 0.0))) {
+                ce.max_rel = a / std::abs(want);
+                ce.max_rel_params = texel_error(k, c, stored, want, err).params;
+            }
             sum_sq[c] += std::isfinite(err) ? err * err : HUGE_VAL;
             rep.max_error_map[k] = std::max(rep.max_error_map[k], a);
             const double allowed = tolerance.abs + tolerance.rel * std::abs(want) +

@@ -164,7 +164,10 @@ int run_compare(const CompareArgs& a) {
         j["described_by"] = d.from_metadata ? "metadata" : "command line";
         j["transform"] = std::string(to_string(d.lut.values));
         nlohmann::json ch = nlohmann::json::array();
-        for (const auto& c : rep.channels) ch.push_back({{"channel", c.channel}, {"max_abs_error", c.max_abs}, {"rms_error", c.rms}});
+        for (const auto& c : rep.channels) {
+            ch.push_back({{"channel", c.channel}, {"max_abs_error", c.max_abs}, {"rms_error", c.rms}});
+            if (a.relative) ch.back()["max_rel_error"] = c.max_rel;
+        }
         j["channels"] = ch;
         nlohmann::json w = nlohmann::json::array();
         for (const auto& t : rep.worst) {
@@ -194,6 +197,18 @@ int run_compare(const CompareArgs& a) {
     for (const Axis& ax : axes) std::printf("axis:  %s\n", axis_line(ax).c_str());
     std::printf("\n%-8s %-14s %-14s\n", "channel", "max |error|", "rms error");
     for (const auto& c : rep.channels) std::printf("%-8s %-14s %-14s\n", c.channel.c_str(), sci(c.max_abs).c_str(), sci(c.rms).c_str());
+    if (a.relative) {
+        std::printf("\n%-8s %-22s %s\n", "channel", "max |error|/|exact|", "at");
+        for (const auto& c : rep.channels) {
+            std::string where;
+            for (std::size_t i = 0; i < axes.size() && i < c.max_rel_params.size(); ++i) {
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "%s%s = %.6g", i ? ", " : "", axes[i].name.c_str(), c.max_rel_params[i]);
+                where += buf;
+            }
+            std::printf("%-8s %-22s %s\n", c.channel.c_str(), sci(c.max_rel).c_str(), where.c_str());
+        }
+    }
     if (!rep.worst.empty()) std::printf("\nworst texels:\n");
     for (const auto& t : rep.worst) {
         std::string where;

@@ -74,6 +74,7 @@ struct CompareArgs {
     std::string plot;
     std::string tolerance;  // --tolerance X or X%; empty: the file's own default
     std::string transform;  // --transform none|srgb
+    bool relative = false;  // --relative: the largest relative error per channel too
 };
 int run_compare(const CompareArgs& a);
 

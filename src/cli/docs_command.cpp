@@ -35,7 +35,9 @@ std::string number(double v) {
 std::string axis_grid(const Axis& a) {
     std::ostringstream s;
     s << "[" << number(a.min) << ", " << number(a.max) << "], " << a.count << " "
-      << (a.placement == Placement::center ? "cell centres" : "end points") << ", " << to_string(a.warp) << " warp";
+      << (a.placement == Placement::center      ? "cell centres"
+          : a.placement == Placement::endpoints ? "end points"
+                                                : "0, then end points") << ", " << to_string(a.warp) << " warp";
     if (a.has_clamp()) s << ", clamped to [" << number(a.clamp_lo) << ", " << number(a.clamp_hi) << "]";
     return s.str();
 }

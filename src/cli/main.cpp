@@ -144,6 +144,9 @@ int main(int argc, char** argv) {
     cmp->add_option("--tolerance", c.tolerance,
                     "Largest allowed |stored - exact|: X (absolute) or X% (of the exact value); default: the "
                     "file's error_bound, or one storage step of a foreign file's pixel type. Exit 1 when exceeded");
+    cmp->add_flag("--relative", c.relative,
+                  "Also print each channel's largest |stored - exact| / |exact| and where (over the values the "
+                  "pixel type resolves to 0.1%)");
     cmp->add_option("--transform", c.transform,
                     "What the file holds of the table's values: none (default) or srgb (their sRGB EOTF, as a "
                     "linear table decoded or sampled as sRGB reads)");

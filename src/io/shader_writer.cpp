@@ -436,7 +436,13 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
             o << "    " << u << " = clamp(" << u << ", " << literal(ax.u_of_value(low)) << ", "
               << literal(ax.u_of_value(high)) << ");  // the clamp in " << warp.name << "\n";
         o << "    float " << kCoord[a] << " = ";
-        if (ax.placement == Placement::center && ax.shift == 0.0) {
+        if (ax.placement == Placement::zero_then_endpoints) {
+            o << "((" << v << " <= " << literal(ax.min) << " ? " << v << " / " << literal(ax.min) << " : 1.0 + " << u
+              << " * " << literal(ax.count - 2) << (ax.shift > 0 ? " - " : " + ") << literal(std::abs(ax.shift))
+              << ") + 0.5) / " << literal(ax.count)
+              << ";  // zero_then_endpoints: position = p / min up to min (texel 0 holds 0),\n"
+              << "    // 1 + u (count - 2) - shift above it; (position + 0.5) / count\n";
+        } else if (ax.placement == Placement::center && ax.shift == 0.0) {
             o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";
         } else if (ax.placement == Placement::center) {
             o << u << (ax.shift > 0 ? " - " : " + ") << literal(std::abs(ax.shift)) << " / " << literal(ax.count)

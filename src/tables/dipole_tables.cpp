@@ -31,19 +31,6 @@ constexpr double kRadiusDomainMax = 1e6;
 const char* kModelName = "dipole diffusion (Jensen et al. 2001)";
 const char* kDefaultMaterial = "skin1";
 
-double parse_number(const std::string& option, const std::string& s) {
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-        v = std::stod(s, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (s.empty() || used != s.size() || !std::isfinite(v))
-        throw Error("--" + option + " '" + s + "' is not a finite number");
-    return v;
-}
-
 // "r,g,b": three finite numbers >= 0 (coefficients in 1/mm).
 std::array<double, 3> parse_coefficients(const std::string& option, const std::string& s) {
     std::array<double, 3> out{};
@@ -100,7 +87,7 @@ struct Boundary {
 Boundary boundary_from(const TableSettings& s) {
     Boundary b{};
     b.fdr = diffuse_fresnel_from_string(tables::param(s, "fdr"));
-    b.eta = parse_number("eta", tables::param(s, "eta"));
+    b.eta = tables::parse_number("eta", tables::param(s, "eta"));
     validate_dipole_eta(b.eta, b.fdr);
     b.F_dr = diffuse_fresnel_reflectance(b.eta, b.fdr);
     b.A = dipole_boundary_term(b.F_dr);

@@ -673,6 +673,12 @@ std::vector<PresetDeclaration> declare() {
            {},
            hc,
            {checks::split_at_one(0, 1, false)}}}});
+    // pbrt-v4's BSSRDFTable (beam_diffusion_tables.cpp names this preset).
+    all.push_back({{"pbrt",
+                    "pbrt-v4's BSSRDFTable for photon beam diffusion: the profile 2 pi r Sr (64 radii x 100 "
+                    "albedos) and rhoEff (100), exact; --construction pbrt_midpoint gives pbrt's own values",
+                    PixelType::float32},
+                   {}});
     // The LTC presets' tables are fits (ltc_tables.cpp), which name these
     // presets.
     // Beside ltc_2: the F82-tint moment on its grid, so that an area light

@@ -47,6 +47,9 @@ ModelOption visibility_option(std::vector<std::string> allowed = {"height_correl
 
 // The option value of `name`, which validate_settings has checked.
 const std::string& param(const TableSettings& s, const std::string& name);
+// The value of a numeric option; throws brdflut::Error ("--OPTION 'S' is not
+// a finite number") unless s is one finite number.
+double parse_number(const std::string& option, const std::string& s);
 
 // The absolute tolerance of a table family at each quality.
 struct Tolerances {
