@@ -255,3 +255,53 @@ TEST(GenericLobe, MomentWeightsAreTheFresnelFactorsTheyName) {
     EXPECT_GT(q.value[1], 0.03);  // about F0 = 0.04 at moderate view
     EXPECT_LT(q.value[1], 0.2);
 }
+
+TEST(GenericLobe, WeightCuspsAndClampsAreConesAboutTheView) {
+    // (1 - c)^p is a cusp at wi = wo unless p is an integer: cones at eight
+    // scales; none for Schlick's p = 5 or for a smooth p = 8.5.
+    EXPECT_EQ(weight_view_cones({moment_weight::schlick_power, 1.25}).size(), 8u);
+    EXPECT_EQ(weight_view_cones({moment_weight::schlick_power, 0.3}).size(), 8u);
+    EXPECT_TRUE(weight_view_cones({moment_weight::schlick_power, 5.0}).empty());
+    EXPECT_TRUE(weight_view_cones({moment_weight::schlick_power, 8.5}).empty());
+    // Total internal reflection at eta = 0.7: F = 1 below c = sqrt(1 - eta^2),
+    // a cone of half angle 2 acos(c) about wo.
+    const std::vector<double> tir = weight_view_cones({moment_weight::dielectric_fresnel, 0.7});
+    ASSERT_EQ(tir.size(), 1u);
+    EXPECT_NEAR(std::cos(0.5 * tir[0]), std::sqrt(1.0 - 0.49), 1e-14);
+    // The remapped dielectric is clamped at 0 where F dips below F0: not at
+    // eta = 1.5 or 3, from c* to 1 at eta = 4.5556 (F(c*) = F0 there).
+    EXPECT_TRUE(weight_view_cones({moment_weight::dielectric_remapped, 1.5}).empty());
+    EXPECT_TRUE(weight_view_cones({moment_weight::dielectric_remapped, 3.0}).empty());
+    const double eta = 4.5556;
+    const std::vector<double> dip = weight_view_cones({moment_weight::dielectric_remapped, eta});
+    ASSERT_EQ(dip.size(), 1u);
+    const double c_star = std::cos(0.5 * dip[0]), f0 = std::pow((eta - 1.0) / (eta + 1.0), 2.0);
+    EXPECT_NEAR(fresnel_dielectric(c_star, eta), f0, 1e-14);
+    EXPECT_GT(c_star, 0.1);
+    EXPECT_LT(c_star, 0.3);
+    EXPECT_LT(fresnel_dielectric(0.5 * (c_star + 1.0), eta), f0);
+}
+
+TEST(GenericLobe, ErrorEstimatesCoverWeightCuspsAndClamps) {
+    // Cycles' generalized Schlick s at texels where the estimates once fell
+    // short of the true error (by up to 8 times) because the weight's cusp
+    // (p = 1.25) or clamp (eta = 4.5556) lay inside a ring: the estimate at
+    // the tables' tolerance, 1e-8, must cover the difference to a run at 1e-13.
+    struct Case {
+        MomentWeight w;
+        double alpha, mu;
+    };
+    for (const Case& c : {Case{{moment_weight::schlick_power, 1.25}, 0.751111, 0.733333},
+                          Case{{moment_weight::schlick_power, 1.25}, 0.751111, 0.133333},
+                          Case{{moment_weight::dielectric_remapped, 4.55556}, 0.537778, 0.0666667}}) {
+        const GgxLobe lobe(c.alpha, Visibility::height_correlated, GgxLobeKind::vndf);
+        GenericOptions opt, tight;
+        opt.abs_tol = 1e-8;
+        tight.abs_tol = 1e-13;
+        tight.max_intervals = 4000;
+        const Estimate<1> e = generic_moments<1>(lobe, c.mu, {c.w}, opt);
+        const Estimate<1> r = generic_moments<1>(lobe, c.mu, {c.w}, tight);
+        EXPECT_LE(std::abs(e.value[0] - r.value[0]), e.error[0] + r.error[0]) << c.w.p << " " << c.alpha << " " << c.mu;
+        EXPECT_LT(e.error[0], 1e-8);
+    }
+}

@@ -178,6 +178,14 @@ inline constexpr MomentWeight kWeightOne{moment_weight::one};
 inline constexpr std::array<MomentWeight, 2> kSplitSumWeights = {MomentWeight{moment_weight::one_minus_schlick},
                                                                  MomentWeight{moment_weight::schlick}};
 
+// The half angles (radians) of the cones about wo where weight w is not
+// smooth (a cusp, a kink or a clamp in c = wo.h; wo.wi = 2 c^2 - 1): (1 - c)^p
+// for a non-integer p below 6, the dielectric weights' total internal
+// reflection (p < 1) and the remapped one's clamp where F dips below F0. The
+// moments split the rings where they cross these cones, as they do the
+// lobe's own kink cones (LobeHints::kink_cones).
+std::vector<double> weight_view_cones(const MomentWeight& w);
+
 // What is integrated over which directions.
 enum class LobeDomain {
     hemisphere,  // f w_k cos(theta_i) over wi.z > 0 (the moments)

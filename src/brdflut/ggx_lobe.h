@@ -37,18 +37,11 @@ public:
     // and cosine-weighted directions.
     bool has_sampler() const override { return true; }
     LobeSample sample(const Vec3& wo, double u1, double u2) const override;
-    // Cones about wo (half angles in radians) where a moment's weight has a
-    // feature: w(c) of c = wo.h depends on wi only through the angle
-    // 2 acos(c) between wo and wi, so a weight that turns within 1 - c < d
-    // (the cusp of (1 - c)^e at c = 1 for e < 1) is resolved by splitting
-    // the rings at the cones of angle 2 acos(1 - d) (LobeHints::kink_cones).
-    void set_view_cones(std::vector<double> angles) { view_cones_ = std::move(angles); }
 
 private:
     Ggx ggx_;
     Visibility vis_;
     GgxLobeKind kind_;
-    std::vector<double> view_cones_;
 };
 
 // GGX's D at the direction of m (any length, m.z > 0), from its components.

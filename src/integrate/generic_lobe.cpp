@@ -26,6 +26,50 @@ double moment_weight::dielectric_remapped(double c, double p) {
     return std::clamp((fresnel_dielectric(c, p) - f0) / (1.0 - f0), 0.0, 1.0);
 }
 
+// Where the weights defined above are not smooth in c. A weight w(c) of
+// c = wo.h depends on wi only through the angle 2 acos(c) between wo and wi
+// (wo.wi = 2 c^2 - 1), so a feature at c is a cone about wo.
+std::vector<double> weight_view_cones(const MomentWeight& w) {
+    std::vector<double> angles;
+    const auto cone = [&angles](double c) { angles.push_back(2.0 * std::acos(std::clamp(c, 0.0, 1.0))); };
+    if (w.f == moment_weight::schlick_power) {
+        // (1 - c)^e is (angle from wo)^(2e) near c = 1: smooth for an integer
+        // e, a cusp otherwise, sharp for small e. The cones 1 - c = 10^-k,
+        // k = 1..8, let the rule resolve it at every scale; above e = 6 the
+        // rule's own order covers it.
+        if (w.p > 0.0 && w.p < 6.0 && w.p != std::round(w.p))
+            for (int k = 1; k <= 8; ++k) cone(1.0 - std::pow(10.0, -k));
+        return angles;
+    }
+    if (w.f != moment_weight::dielectric_fresnel && w.f != moment_weight::dielectric_remapped) return angles;
+    const double eta = w.p;
+    if (!(eta > 0.0) || eta == 1.0) return angles;
+    // Total internal reflection (eta < 1): F = 1 for c below the critical cosine.
+    if (eta < 1.0) cone(std::sqrt((1.0 - eta) * (1.0 + eta)));
+    if (w.f == moment_weight::dielectric_remapped) {
+        // (F - F0) / (1 - F0) is clamped at 0 where the unpolarized reflectance
+        // dips below F0 (eta above about 3, between c* and 1): a kink at c*.
+        const double r = (eta - 1.0) / (eta + 1.0), f0 = r * r;
+        const auto g = [&](double c) { return fresnel_dielectric(c, eta) - f0; };
+        constexpr int kSteps = 256;
+        double c0 = 1e-6, g0 = g(c0);
+        for (int i = 1; i < kSteps; ++i) {  // c = 1 itself is a root of every eta
+            const double c1 = static_cast<double>(i) / kSteps, g1 = g(c1);
+            if ((g0 < 0.0) != (g1 < 0.0) && g0 != 0.0 && g1 != 0.0) {
+                double lo = c0, hi = c1;
+                for (int it = 0; it < 60; ++it) {
+                    const double mid = 0.5 * (lo + hi);
+                    ((g(mid) < 0.0) == (g0 < 0.0) ? lo : hi) = mid;
+                }
+                cone(0.5 * (lo + hi));
+            }
+            c0 = c1;
+            g0 = g1;
+        }
+    }
+    return angles;
+}
+
 LobeHints microfacet_reflection_hints(const Vec3& wo, double alpha) {
     LobeHints h;
     h.has_peak = true;
@@ -88,11 +132,14 @@ struct Frame {
     double rel_rounding = 0.0;
 };
 
-Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain) {
+Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain, const MomentWeight* weights,
+                 std::size_t n) {
     Frame fr;
     const double sin_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
     fr.wo = {sin_o, 0.0, mu_o};
-    const LobeHints h = lobe.hints(fr.wo);
+    LobeHints h = lobe.hints(fr.wo);
+    for (std::size_t k = 0; k < n; ++k)
+        for (double a : weight_view_cones(weights[k])) h.kink_cones.push_back({fr.wo, a});
     fr.has_peak = h.has_peak;
     fr.below = domain == LobeDomain::lower_hemisphere;
     if (h.has_peak) {
@@ -309,12 +356,19 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
     };
     if (fr.hemisphere) add_point(fr.theta_a, true);
     if (fr.theta_star >= 0.0) add_point(fr.theta_star, true);
-    // Where the rings start or stop crossing a cone (they touch it there).
+    // Where the rings start or stop crossing a cone (they touch it there),
+    // and, over a hemisphere, the ring through the points where the cone's
+    // edge meets the horizon (w = (cos phi, sin phi, 0) with w.d = cos beta):
+    // the part of the rings inside the cone and above the horizon ends there.
     for (const auto* cones : {&fr.support, &fr.kink_cones})
         for (const FrameCone& k : *cones) {
             add_point(std::abs(k.beta - k.gamma), true);
             add_point(k.gamma + k.beta, true);
             add_point(2.0 * kPi - k.beta - k.gamma, true);
+            if (fr.hemisphere && std::abs(k.d.x) > 0.0) {
+                const double cos_phi = k.cos_beta / k.d.x;
+                if (std::abs(cos_phi) <= 1.0) add_point(std::acos(std::clamp(fr.p.x * cos_phi, -1.0, 1.0)), true);
+            }
         }
     add_point(fr.w, false);
     for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
@@ -377,7 +431,7 @@ Estimate<kMaxWeights> moments_core(const GenericLobe& lobe, double mu_o, const M
                                    const GenericOptions& opt) {
     if (n == 0) return {};
     mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, kGenericGrazingMu, 1.0);
-    const Frame fr = make_frame(lobe, mu_o, opt.domain);
+    const Frame fr = make_frame(lobe, mu_o, opt.domain, weights, n);
     Estimate<kMaxWeights> out;
     if (fr.rel_rounding > 0.1 * opt.abs_tol) {
         // The rounding of f may lie above the tolerance: find the moments'

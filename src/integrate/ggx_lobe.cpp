@@ -23,9 +23,7 @@ double GgxLobe::f(const Vec3& wo, const Vec3& wi) const {
 }
 
 LobeHints GgxLobe::hints(const Vec3& wo) const {
-    LobeHints h = microfacet_reflection_hints(wo, ggx_.alpha);
-    for (double a : view_cones_) h.kink_cones.push_back({wo, a});
-    return h;
+    return microfacet_reflection_hints(wo, ggx_.alpha);
 }
 
 LobeSample GgxLobe::sample(const Vec3& wo, double u1, double u2) const {

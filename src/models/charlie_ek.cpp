@@ -55,8 +55,13 @@ double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
     return d * g / (4.0 * wo.z * wi.z);
 }
 
-LobeHints CharlieLobe::hints(const Vec3&) const {
+LobeHints CharlieLobe::hints(const Vec3& wo) const {
     LobeHints h;
+    // D = c sin(theta_h)^(1/alpha) is not smooth where h is the normal, at
+    // the mirror direction of wo (|theta_h|^(1/alpha) there; a kink as alpha
+    // tends to 1): the ring through it is a break point, and the point itself
+    // an end of the ring's azimuth range.
+    h.kinks = {std::acos(std::clamp(wo.z, -1.0, 1.0))};
     // Lambda's second derivative jumps at mu_i = 1/2 (a cone about the normal).
     if (shadowing_ != SheenShadowing::neubelt) h.kink_cones = {LobeCone{{0.0, 0.0, 1.0}, kPi / 3.0}};
     return h;

@@ -70,14 +70,6 @@ enum class Kind {
 
 double exponent_of_z(double z) { return 5.0 * (1.0 - z) / z; }
 
-// (1 - c)^e with e < 1 has a cusp at c = 1 (wi = wo): the cones about wo
-// where 1 - c = 10^-k, k = 1..8, let the rule resolve it at every scale.
-std::vector<double> cusp_cones() {
-    std::vector<double> out;
-    for (int k = 1; k <= 8; ++k) out.push_back(2.0 * std::acos(1.0 - std::pow(10.0, -k)));
-    return out;
-}
-
 class MomentEvaluator final : public TexelEvaluator {
 public:
     MomentEvaluator(Kind kind, Visibility vis, const TableSettings& s)
@@ -130,8 +122,8 @@ public:
             out.value[0] = w(std::clamp(mu, 0.0, 1.0));
             return out;
         }
-        GgxLobe lobe(alpha, Visibility::height_correlated, GgxLobeKind::vndf);
-        if (kind_ == Kind::cycles_schlick && w.p < 1.0) lobe.set_view_cones(cusp_cones());
+        // The weight's cusp or clamp is a cone about wo (weight_view_cones).
+        const GgxLobe lobe(alpha, Visibility::height_correlated, GgxLobeKind::vndf);
         store(mc_ ? generic_moments_mc<1>(lobe, mu, {w}, samples_, seed) : generic_moments<1>(lobe, mu, {w}, opt),
               1);
         return out;
