@@ -179,12 +179,13 @@ TEST(EnginePresets, GodotForwardPlusFlipsRowsAndPacksTheCharlieCloth) {
     EXPECT_EQ(def.axes[0].axis.count, 128);
 }
 
-// DFGLUTData.js's generator: x = roughness (y + 0.5)/32 ... columns, rows NdotV.
+// DFGLUTData.js's generator: x = roughness (i + 0.5)/16 columns (32 up to r181), rows NdotV.
 TEST(EnginePresets, ThreeJsStoresRoughnessColumnsAndViewCosineRows) {
     const TableDefinition& def = find_table("threejs_dfg");
     EXPECT_EQ(def.axes[0].axis.name, "roughness");
     EXPECT_EQ(def.axes[1].axis.name, "cos_theta");
-    EXPECT_EQ(def.axes[0].axis.count, 32);
+    EXPECT_EQ(def.axes[0].axis.count, 16);
+    EXPECT_EQ(def.axes[1].axis.count, 16);
     const Table t = small("threejs_dfg", 4);
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < 4; ++i) {

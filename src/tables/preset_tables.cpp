@@ -600,12 +600,15 @@ std::vector<PresetDeclaration> declare() {
            hc,
            {checks::split_at_one(0, 1, false)}}}});
     all.push_back(
-        {{"threejs", "three.js's DFGLUTData: 32x32 RG16F split sum, columns roughness, rows NdotV",
+        {{"threejs",
+          "three.js's DFGLUTData: 16x16 RG16F split sum (since r182; 32x32 up to r181), columns roughness, rows "
+          "NdotV",
           PixelType::half},
          {{"threejs_dfg", "three.js DFGLUTData: (scale, bias) = (A, B), height-correlated GGX, x = roughness",
-           "mrdoob/three.js src/renderers/shaders/DFGLUTData.js @95dc8849b1f9037294afaa03ef3330e41fd58aa6 "
-           "(generator utils/generateDFGLUT.js)",
-           {roughness(32, Placement::center), cos_theta(32, Placement::center)},
+           "mrdoob/three.js src/renderers/shaders/DFGLUTData.js as released in r187 (npm three 0.187.0, 16x16, "
+           "the same data since r182); r181's 32x32 is @95dc8849b1f9037294afaa03ef3330e41fd58aa6 (--size 32). "
+           "Generator utils/generateDFGLUT.js",
+           {roughness(16, Placement::center), cos_theta(16, Placement::center)},
            {split_a(), split_b()},
            {},
            hc,
