@@ -56,13 +56,6 @@ Table make_table(int channels, double top = 1.0, int width = 7, int height = 5) 
     return t;
 }
 
-std::vector<Format> formats_holding(Storage s) {
-    std::vector<Format> out;
-    for (Format f : {Format::exr, Format::cpp, Format::png16, Format::png, Format::dds, Format::ktx2})
-        if (format_holds(f, s)) out.push_back(f);
-    return out;
-}
-
 }  // namespace
 
 // Round to nearest as D3D and Vulkan convert a float to UNORM: every value
@@ -347,6 +340,58 @@ TEST(Encoding, CliGeneratesComparesAndRefusesEncodings) {
     r = run_cli("generate disney_diffuse_albedo --size 8 --format ktx2 --encoding rgb10a2 -o '" + out + "'", dir);
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("outside [0, 1]"), std::string::npos) << r.err;
+}
+
+// A preset table that its engine stores in an integer encoding (Unreal's
+// G16R16 UNORM, glTF's RGBA8 PNG, Babylon's RGBD) is written in it by the
+// formats that hold it, unless --pixel or --encoding says otherwise; EXR and
+// the other tables keep the preset's pixel type. (Unreal's cloth energy and
+// glTF's Charlie exceed 1 and HDRP's diffuse channel E - 0.5 falls below 0:
+// the engines' unorm textures clamp them, and brdflut refuses to, so those
+// keep theirs.)
+TEST(Encoding, PresetsWriteTheEnginesEncodingWhereTheFormatHoldsIt) {
+    TempDir dir;
+    const std::string out = dir / "o";
+    const auto pixel_of = [&](const std::string& file) {
+        const auto r = run_cli("inspect '" + out + "/" + file + "' --json", dir);
+        EXPECT_EQ(r.exit_code, 0) << file << r.err;
+        return r.exit_code == 0 ? nlohmann::json::parse(r.out).at("pixel").get<std::string>() : std::string();
+    };
+    auto r = run_cli("generate --preset unreal --size 8 --format ktx2 -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("unreal_dfg.ktx2: 8x8, 2 channel(s), unorm16"), std::string::npos) << r.out;
+    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "unorm16");
+    EXPECT_EQ(pixel_of("unreal_cloth_energy.ktx2"), "float");
+    r = run_cli("compare '" + out + "/unreal_dfg.ktx2'", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_cli("generate --preset unreal --size 8 --format ktx2 --pixel float -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "float");
+    r = run_cli("generate --preset unreal --size 8 --format ktx2 --encoding half -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "half");
+    r = run_cli("generate --preset unreal --size 8 -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("unreal_dfg.exr"), "float");
+
+    // A preset table named by id is written the same way.
+    r = run_cli("generate gltf_ggx gltf_charlie --size 8 --format dds -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("gltf_ggx.dds"), "unorm8");
+    EXPECT_EQ(pixel_of("gltf_charlie.dds"), "float");
+    r = run_cli("generate --preset babylon --size 8 --format png -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("babylon_brdf.png"), "rgbd");
+    r = run_cli("compare '" + out + "/babylon_brdf.png'", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    r = run_cli("generate --preset hdrp --size 8 --format dds -q -o '" + out + "'", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(pixel_of("hdrp_fgd.dds"), "half");
+    // The lookup functions read linear values: rgbd with --shader is refused,
+    // naming the table.
+    r = run_cli("generate --preset babylon --size 8 --format png --shader glsl -q -o '" + out + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("babylon_brdf's engine encoding rgbd"), std::string::npos) << r.err;
 }
 
 // The fuzzer's seeds of the integer encodings (tests/fuzz/corpus, first

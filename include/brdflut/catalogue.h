@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,12 @@ struct TableDefinition {
     // "1 - ggx_albedo.0"); `list`, `brdflut docs` and the metadata show them.
     std::string engine_source;
     std::vector<std::string> channel_recipes;
+    // For a preset table the engine stores in an integer encoding whose range
+    // holds its values (Unreal's G16R16 UNORM, glTF's 8-bit PNG, Babylon's
+    // RGBD): that storage. `generate` writes it when neither --pixel nor
+    // --encoding is given and the format holds it (dds, ktx2, png), and the
+    // preset's pixel type otherwise.
+    std::optional<Storage> engine_storage;
     // Whether `identify` searches this table. Tables that cost milliseconds
     // a texel (the LTC fits; the glass averages, a 3-D integral each) are
     // left out: tabulating them for the coarse search would cost more than

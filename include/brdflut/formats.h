@@ -29,6 +29,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "brdflut/exr.h"
 #include "brdflut/table.h"
@@ -47,6 +48,8 @@ Storage storage_for(Format f, PixelType pixel);
 // Whether format f can hold storage s (exr, cpp: half, float; png16:
 // unorm16; png: unorm16, unorm8, rgbd; dds, ktx2: all); the list for f.
 bool format_holds(Format f, Storage s);
+// The formats that hold storage s, in the order of the format list.
+std::vector<Format> formats_holding(Storage s);
 std::string format_storages(Format f);
 // Throws brdflut::Error naming the encoding, the format and what it allows.
 void check_format_holds(Format f, Storage s);

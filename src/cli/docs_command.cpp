@@ -15,6 +15,7 @@
 #include "brdflut/catalogue.h"
 #include "brdflut/conductor_presets.h"
 #include "brdflut/error.h"
+#include "brdflut/formats.h"
 #include "brdflut/furnace.h"
 #include "cli/commands.h"
 #include "io/binary.h"
@@ -43,6 +44,13 @@ std::string axis_grid(const Axis& a) {
 }
 
 // Markdown table cells hold no '|' or line break.
+// "dds, ktx2, png"
+std::string format_names(const std::vector<Format>& formats) {
+    std::string out;
+    for (const Format f : formats) out += (out.empty() ? "" : ", ") + std::string(to_string(f));
+    return out;
+}
+
 std::string cell(std::string s) {
     for (char& c : s)
         if (c == '\n') c = ' ';
@@ -110,6 +118,10 @@ std::string tables_page() {
                   << (c < d.channel_recipes.size() ? " = `" + d.channel_recipes[c] + "`" : std::string()) << "\n";
             o << "\n";
             if (!d.engine_source.empty()) o << "Source: " << d.engine_source << ".\n\n";
+            if (d.engine_storage)
+                o << "The engine stores it as " << to_string(*d.engine_storage)
+                  << ": `generate` writes that in the formats that hold it (" << format_names(formats_holding(*d.engine_storage))
+                  << ") unless `--pixel` or `--encoding` is given.\n\n";
             if (!d.options.empty()) {
                 o << "Options:";
                 for (const ModelOption& opt : d.options) o << " " << option_text(opt) << ";";
@@ -131,11 +143,17 @@ std::string presets_page() {
       << "`brdflut generate --preset NAME` writes the tables of one engine, each in the engine's own layout. "
          "What each engine's shipped table holds and how brdflut's compares with it is in "
          "[the engines page](../engines.md).\n\n"
+      << "The pixel column is what the preset writes unless `--pixel` or `--encoding` is given; a table the "
+         "engine stores in an integer encoding that holds its values is written in that encoding instead (in "
+         "brackets) by the formats that hold it.\n\n"
       << "| preset | tables | pixel | description |\n|---|---|---|---|\n";
     for (const Preset& p : presets()) {
         o << "| <a id=\"" << p.name << "\"></a>`" << p.name << "` | ";
         std::string ids;
-        for (const TableDefinition* d : preset_tables(p.name)) ids += (ids.empty() ? "" : ", ") + ("[`" + d->id + "`](tables.md#" + d->id + ")");
+        for (const TableDefinition* d : preset_tables(p.name)) {
+            ids += (ids.empty() ? "" : ", ") + ("[`" + d->id + "`](tables.md#" + d->id + ")");
+            if (d->engine_storage) ids += " (" + std::string(to_string(*d->engine_storage)) + ")";
+        }
         o << ids << " | " << to_string(p.pixel) << " | " << cell(p.description) << " |\n";
     }
     return o.str();
@@ -282,6 +300,7 @@ nlohmann::json catalogue_json() {
                             {"preset", d.preset},
                             {"channels", d.channels},
                             {"engine_source", d.engine_source},
+                            {"engine_storage", d.engine_storage ? std::string(to_string(*d.engine_storage)) : ""},
                             {"recipe", d.channel_recipes},
                             {"methods", d.supports_monte_carlo ? nlohmann::json{"quadrature", "mc"}
                                                                : nlohmann::json{"quadrature"}}};

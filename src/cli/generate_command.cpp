@@ -62,7 +62,10 @@ int run_list(bool presets_only, bool json) {
     if (presets_only) {
         for (const Preset& p : presets()) {
             std::cout << p.name << "\n  " << p.description << "\n  tables:";
-            for (const TableDefinition* d : preset_tables(p.name)) std::cout << " " << d->id;
+            for (const TableDefinition* d : preset_tables(p.name)) {
+                std::cout << " " << d->id;
+                if (d->engine_storage) std::cout << " [engine: " << to_string(*d->engine_storage) << "]";
+            }
             std::cout << " (" << to_string(p.pixel) << ")\n\n";
         }
         return 0;
@@ -76,6 +79,9 @@ int run_list(bool presets_only, bool json) {
             std::cout << "  " << kChannels[c] << ": " << d.channels[c]
                       << (c < d.channel_recipes.size() ? " = " + d.channel_recipes[c] : std::string()) << "\n";
         if (!d.engine_source.empty()) std::cout << "  source: " << d.engine_source << "\n";
+        if (d.engine_storage)
+            std::cout << "  engine storage: " << to_string(*d.engine_storage)
+                      << " (generate writes it in the formats that hold it unless --pixel or --encoding is given)\n";
         for (const ModelOption& o : d.options) {
             std::cout << "  --" << o.name;
             if (!o.default_value.empty()) std::cout << " (default " << o.default_value;
@@ -113,6 +119,19 @@ int run_generate(const GenerateArgs& a) {
     // A preset's half pixels in a format without half: the format's own storage.
     const Storage storage = a.encoding.empty() ? storage_for(format, pixel) : storage_from_string(a.encoding);
     check_format_holds(format, storage);
+    // Each table's storage: a preset table's engine encoding where the format
+    // holds it and no --pixel or --encoding was given, else `storage`.
+    const auto storage_of_table = [&](const TableDefinition& d) {
+        const bool engine = a.encoding.empty() && !a.pixel_given && d.engine_storage &&
+                            format_holds(format, *d.engine_storage);
+        return engine ? *d.engine_storage : storage;
+    };
+    if (!a.shaders.empty())
+        for (const TableDefinition* d : defs)
+            if (storage_of_table(*d) == Storage::rgbd)
+                throw Error("--shader does not apply to " + d->id +
+                            "'s engine encoding rgbd: the lookup functions read linear values, and rgbd needs its "
+                            "decode (fromRGBD) after filtering; give --pixel half or float with --shader");
     if (storage == Storage::rgbd && !a.shaders.empty())
         throw Error("--shader does not apply to --encoding rgbd: the lookup functions read linear values, and rgbd "
                     "needs its decode (fromRGBD) after filtering; allowed with --shader: half, float, unorm16, "
@@ -155,6 +174,7 @@ int run_generate(const GenerateArgs& a) {
     // outside png16's [0, 1], say) leaves no partial set of files behind.
     const bool bar = !a.quiet && stderr_is_terminal();
     std::vector<Table> tables;
+    std::vector<Storage> storages;
     std::vector<double> seconds;
     for (std::size_t i = 0; i < defs.size(); ++i) {
         if (settings[i].axes.empty()) {
@@ -169,23 +189,25 @@ int run_generate(const GenerateArgs& a) {
         tables.push_back(generate(*defs[i], settings[i], opt));
         progress.finish();
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-        check_storable(tables.back(), storage);
+        storages.push_back(storage_of_table(*defs[i]));
+        check_storable(tables.back(), storages.back());
     }
     for (std::size_t i = 0; i < tables.size(); ++i) {
         const Table& table = tables[i];
         const std::string path =
             (std::filesystem::path(a.output) / (table.id + "." + file_extension(format))).string();
-        write_table(path, table, storage, format);
+        const Storage storage_i = storages[i];
+        write_table(path, table, storage_i, format);
         for (const ShaderLanguage lang : shaders) {
             const std::string shader_path =
                 (std::filesystem::path(a.output) / (table.id + "." + shader_extension(lang))).string();
-            write_shader(shader_path, table, storage, lang);
+            write_shader(shader_path, table, storage_i, lang);
             if (!a.quiet) std::printf("wrote %s\n", shader_path.c_str());
         }
         if (!a.quiet) {
             std::printf("wrote %s: %dx%d, %d channel(s), %s, error bound %.2e, %.2f s\n", path.c_str(),
                         table.width(), table.height(), table.channel_count(),
-                        std::string(to_string(storage)).c_str(), error_bound(table, storage), seconds[i]);
+                        std::string(to_string(storage_i)).c_str(), error_bound(table, storage_i), seconds[i]);
             std::fflush(stdout);
         }
     }

@@ -95,6 +95,13 @@ bool format_holds(Format f, Storage s) {
     return std::find(i.storages.begin(), i.storages.begin() + i.storage_count, s) != i.storages.begin() + i.storage_count;
 }
 
+std::vector<Format> formats_holding(Storage s) {
+    std::vector<Format> out;
+    for (const auto& i : kFormats)
+        if (format_holds(i.format, s)) out.push_back(i.format);
+    return out;
+}
+
 std::string format_storages(Format f) {
     const FormatInfo& i = info(f);
     std::string out;

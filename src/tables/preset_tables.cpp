@@ -425,7 +425,8 @@ std::vector<PresetDeclaration> declare() {
             split_b("B: integral of f (1 - v.h)^5 cos(theta_i) dw_i (bias)")},
            {{"visibility", "smith_joint_approx"}},
            ggx_model(Visibility::smith_joint_approx),
-           {checks::split_at_one(0, 1, false), checks::joint_approx_generic()}},
+           {checks::split_at_one(0, 1, false), checks::joint_approx_generic()},
+           Storage::unorm16},  // G16R16 UNORM
           {"unreal_cloth_energy",
            "UE5 ShadingEnergyClothSpecTexture: (E, F) of Charlie with Neubelt's visibility, alpha = row coordinate",
            "Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 2, SUBSTRATE_ENABLED: "
@@ -550,7 +551,8 @@ std::vector<PresetDeclaration> declare() {
            {split_a(), split_b()},
            {},
            hc,
-           {checks::split_at_one(0, 1, false)}},
+           {checks::split_at_one(0, 1, false)},
+           Storage::unorm8},  // RGBA8 PNG
           {"gltf_charlie", "glTF-IBL-Sampler lut_charlie: Charlie sheen E in B (R, G unused)",
            "KhronosGroup/glTF-IBL-Sampler lib/source/shaders/filter.frag (LUT, cCharlie)",
            mu_r(128, 128, Placement::center),
@@ -644,8 +646,8 @@ std::vector<PresetDeclaration> declare() {
            {checks::one_minus_albedo_at_alpha_one()}}}});
     all.push_back(
         {{"babylon",
-          "Babylon.js's environmentBRDFTexture without its RGBD encoding: 256x256, R = B term, G = A + B, "
-          "B = Charlie sheen",
+          "Babylon.js's environmentBRDFTexture: 256x256, R = B term, G = A + B, B = Charlie sheen; RGBD-encoded "
+          "as Babylon ships it with --format png",
           PixelType::half},
          {{"babylon_brdf",
            "Babylon.js environment BRDF: R = B term, G = A + B (height-correlated), B = Charlie sheen albedo",
@@ -658,7 +660,8 @@ std::vector<PresetDeclaration> declare() {
             charlie("B: Charlie sheen albedo, alpha = sheen_roughness^2")},
            {},
            filament_model,
-           {checks::split_at_one(-1, 1, false), checks::charlie_normal(2)}}}});
+           {checks::split_at_one(-1, 1, false), checks::charlie_normal(2)},
+           Storage::rgbd}}});  // RGBD in an RGBA8 PNG
     all.push_back(
         {{"usd_storm",
           "OpenUSD Storm's domeLightBRDF: split sum with Schlick-Smith G (k = alpha/2), NdotE clamped to "

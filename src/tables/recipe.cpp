@@ -231,6 +231,7 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
     for (const ChannelRecipe& c : entry.channels) d.channels.push_back(c.meaning);
     d.preset = preset;
     d.engine_source = entry.engine_source;
+    d.engine_storage = entry.engine_storage;
     for (const ChannelRecipe& c : entry.channels) d.channel_recipes.push_back(channel_expression(c));
     d.checks = entry.checks;
     // Until resolve_recipe_tables has read the core tables.

@@ -64,6 +64,9 @@ struct RecipeTable {
     std::map<std::string, std::string> options;
     nlohmann::json model;  // the table's model metadata (preset and engine_source are added)
     std::vector<ClosedFormCheck> checks;
+    // The integer encoding the engine stores the texture in, if any
+    // (TableDefinition::engine_storage).
+    std::optional<Storage> engine_storage = std::nullopt;
 };
 
 // The method metadata of a group of recipe tables: the rule's description
