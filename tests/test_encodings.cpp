@@ -352,46 +352,45 @@ TEST(Encoding, CliGeneratesComparesAndRefusesEncodings) {
 TEST(Encoding, PresetsWriteTheEnginesEncodingWhereTheFormatHoldsIt) {
     TempDir dir;
     const std::string out = dir / "o";
-    const auto pixel_of = [&](const std::string& file) {
-        const auto r = run_cli("inspect '" + out + "/" + file + "' --json", dir);
-        EXPECT_EQ(r.exit_code, 0) << file << r.err;
-        return r.exit_code == 0 ? nlohmann::json::parse(r.out).at("pixel").get<std::string>() : std::string();
+    // Runs `generate ARGS -o out` and returns the stored pixel type of each file.
+    const auto generate = [&](const std::string& args, const std::vector<std::string>& files) {
+        const auto r = run_cli("generate " + args + " -o '" + out + "'", dir);
+        EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
+        std::vector<std::string> pixels;
+        for (const std::string& f : files) {
+            const auto i = run_cli("inspect '" + out + "/" + f + "' --json", dir);
+            EXPECT_EQ(i.exit_code, 0) << f << i.err;
+            pixels.push_back(i.exit_code == 0 ? nlohmann::json::parse(i.out).at("pixel").get<std::string>() : "");
+        }
+        return std::make_pair(r.out, pixels);
     };
-    auto r = run_cli("generate --preset unreal --size 8 --format ktx2 -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_NE(r.out.find("unreal_dfg.ktx2: 8x8, 2 channel(s), unorm16"), std::string::npos) << r.out;
-    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "unorm16");
-    EXPECT_EQ(pixel_of("unreal_cloth_energy.ktx2"), "float");
-    r = run_cli("compare '" + out + "/unreal_dfg.ktx2'", dir);
+    using Pixels = std::vector<std::string>;
+    const auto [said, unreal] = generate("--preset unreal --size 8 --format ktx2", {"unreal_dfg.ktx2", "unreal_cloth_energy.ktx2"});
+    EXPECT_NE(said.find("unreal_dfg.ktx2: 8x8, 2 channel(s), unorm16"), std::string::npos) << said;
+    EXPECT_EQ(unreal, (Pixels{"unorm16", "float"}));
+    auto r = run_cli("compare '" + out + "/unreal_dfg.ktx2'", dir);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_cli("generate --preset unreal --size 8 --format ktx2 --pixel float -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "float");
-    r = run_cli("generate --preset unreal --size 8 --format ktx2 --encoding half -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("unreal_dfg.ktx2"), "half");
-    r = run_cli("generate --preset unreal --size 8 -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("unreal_dfg.exr"), "float");
-
+    EXPECT_EQ(generate("--preset unreal --size 8 --format ktx2 --pixel float -q", {"unreal_dfg.ktx2"}).second,
+              Pixels{"float"});
+    EXPECT_EQ(generate("--preset unreal --size 8 --format ktx2 --encoding half -q", {"unreal_dfg.ktx2"}).second,
+              Pixels{"half"});
+    EXPECT_EQ(generate("--preset unreal --size 8 -q", {"unreal_dfg.exr"}).second, Pixels{"float"});
     // A preset table named by id is written the same way.
-    r = run_cli("generate gltf_ggx gltf_charlie --size 8 --format dds -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("gltf_ggx.dds"), "unorm8");
-    EXPECT_EQ(pixel_of("gltf_charlie.dds"), "float");
-    r = run_cli("generate --preset babylon --size 8 --format png -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("babylon_brdf.png"), "rgbd");
+    EXPECT_EQ(generate("gltf_ggx gltf_charlie --size 8 --format dds -q", {"gltf_ggx.dds", "gltf_charlie.dds"}).second,
+              (Pixels{"unorm8", "float"}));
+    EXPECT_EQ(generate("--preset babylon --size 8 --format png -q", {"babylon_brdf.png"}).second, Pixels{"rgbd"});
     r = run_cli("compare '" + out + "/babylon_brdf.png'", dir);
     EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
-    r = run_cli("generate --preset hdrp --size 8 --format dds -q -o '" + out + "'", dir);
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(pixel_of("hdrp_fgd.dds"), "half");
+    EXPECT_EQ(generate("--preset hdrp --size 8 --format dds -q", {"hdrp_fgd.dds"}).second, Pixels{"half"});
     // The lookup functions read linear values: rgbd with --shader is refused,
-    // naming the table.
+    // naming the table for an engine encoding and the option for --encoding.
     r = run_cli("generate --preset babylon --size 8 --format png --shader glsl -q -o '" + out + "'", dir);
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("babylon_brdf's engine encoding rgbd"), std::string::npos) << r.err;
+    r = run_cli("generate ggx_dfg --size 8 --format png --encoding rgbd --shader glsl -q -o '" + out + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--shader does not apply to --encoding rgbd"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("allowed with --shader: half, float, unorm16, unorm8, rgb10a2"), std::string::npos) << r.err;
 }
 
 // The fuzzer's seeds of the integer encodings (tests/fuzz/corpus, first

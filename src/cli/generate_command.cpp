@@ -126,16 +126,15 @@ int run_generate(const GenerateArgs& a) {
                             format_holds(format, *d.engine_storage);
         return engine ? *d.engine_storage : storage;
     };
+    // The lookup functions read linear values; rgbd needs its decode after filtering.
     if (!a.shaders.empty())
         for (const TableDefinition* d : defs)
             if (storage_of_table(*d) == Storage::rgbd)
-                throw Error("--shader does not apply to " + d->id +
-                            "'s engine encoding rgbd: the lookup functions read linear values, and rgbd needs its "
-                            "decode (fromRGBD) after filtering; give --pixel half or float with --shader");
-    if (storage == Storage::rgbd && !a.shaders.empty())
-        throw Error("--shader does not apply to --encoding rgbd: the lookup functions read linear values, and rgbd "
-                    "needs its decode (fromRGBD) after filtering; allowed with --shader: half, float, unorm16, "
-                    "unorm8, rgb10a2");
+                throw Error("--shader does not apply to " +
+                            (a.encoding.empty() ? d->id + "'s engine encoding rgbd" : std::string("--encoding rgbd")) +
+                            ": the lookup functions read linear values, and rgbd needs its decode (fromRGBD) after "
+                            "filtering; allowed with --shader: half, float, unorm16, unorm8, rgb10a2 (--pixel or "
+                            "--encoding)");
     std::vector<ShaderLanguage> shaders;
     for (const std::string& s : a.shaders) {
         try {
