@@ -16,7 +16,7 @@
 using namespace brdflut;
 
 namespace {
-const Visibility kBoth[] = {Visibility::height_correlated, Visibility::separable};
+const Visibility kGgxVisibilities[] = {Visibility::height_correlated, Visibility::separable};
 
 }  // namespace
 
@@ -80,7 +80,7 @@ TEST(GgxSplitSum, AverageAlbedoMatchesClosedFormAtAlphaOne) {
 }
 
 TEST(GgxSplitSum, MirrorLimitAsAlphaGoesToZero) {
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double mu : {0.05, 0.3, 0.7, 1.0}) {
             const Estimate<2> e = ggx_split_sum(mu, 1e-6, vis);
             EXPECT_NEAR(e.value[0] + e.value[1], 1.0, 1e-4) << "mu " << mu;
@@ -98,7 +98,7 @@ TEST(GgxSplitSum, NormalIncidenceLossIsAlphaSquaredForSmallAlpha) {
     // mu_i = cos(2 theta_h) < alpha, a band of probability O(alpha^3), so
     // E(1) = 1 / (1 + alpha^2) - O(alpha^3) (about 1.35 alpha^3). Monte Carlo cannot
     // see this loss (an event of probability alpha^2); this oracle can.
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double alpha : {(0.5 / 128) * (0.5 / 128), 1e-4, 1e-3}) {
             const Estimate<2> e = ggx_split_sum(1.0, alpha, vis);
             const double a2 = alpha * alpha;
@@ -116,7 +116,7 @@ TEST(GgxSplitSum, GrazingIncidenceGivesTheLimitNotZero) {
     const Estimate<2> one = ggx_split_sum(0.0, 1.0, Visibility::height_correlated);
     EXPECT_NEAR(one.value[0] + one.value[1], 1.0, 1e-10);
     // Every alpha and visibility: continuous at mu = 0.
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double alpha : {1e-3, 0.1, 0.5}) {
             const Estimate<2> z = ggx_split_sum(0.0, alpha, vis);
             const Estimate<2> near = ggx_split_sum(1e-12, alpha, vis);
@@ -138,7 +138,7 @@ TEST(GgxSplitSum, SeparableLosesMoreEnergyThanHeightCorrelated) {
 }
 
 TEST(GgxSplitSum, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double alpha : {0.5 / 128 * 0.5 / 128, 1e-3, 0.05, 0.3, 0.9})
             for (double mu : {0.5 / 128, 0.02, 0.3, 0.99}) {
                 const Estimate<2> e = ggx_split_sum(mu, alpha, vis, 1e-9);
@@ -157,7 +157,7 @@ TEST(GgxSplitSum, ErrorEstimateIsHonestOnADenseSpreadAtTheTablesTolerances) {
     // tables' tolerance and at the functions' default, against 1e-12.
     const double mus[] = {0.5 / 128, 1.5 / 128, 4.5 / 128, 0.1, 0.25, 0.5, 0.75, 0.9, 127.5 / 128};
     const double roughness[] = {0.5 / 128, 1.5 / 128, 4.5 / 128, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 127.5 / 128};
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double r : roughness)
             for (double mu : mus) {
                 const double alpha = r * r;
@@ -178,7 +178,7 @@ TEST(GgxSplitSum, EverySimdWidthGivesTheSameBits) {
     // width must give exactly the values, errors and work of one at a time.
     test::expect_same_bits_at_every_ggx_simd_width([] {
         std::vector<Estimate<2>> out;
-        for (Visibility vis : kBoth)
+        for (Visibility vis : kGgxVisibilities)
             for (double alpha : {(0.5 / 128) * (0.5 / 128), 3e-3, 0.08, 0.45, 1.0})
                 for (double mu : {0.5 / 128, 0.04, 0.3, 0.8, 1.0})
                     out.push_back(ggx_split_sum(mu, alpha, vis, kGgxTableTolerance));
@@ -191,7 +191,7 @@ TEST(GgxSplitSum, AgreesWithMonteCarloWithinFourStandardErrors) {
     const double mus[] = {grazing, 0.05, 0.3, 0.7, 1.0};
     const double alphas[] = {smallest_alpha, 0.01, 0.1, 0.4, 1.0};
     std::uint64_t seed = 7;
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double mu : mus)
             for (double alpha : alphas) {
                 const Estimate<2> q = ggx_split_sum(mu, alpha, vis);
@@ -211,7 +211,7 @@ TEST(GgxAverage, AgreesWithMonteCarloWithinFourStandardErrors) {
     // (~alpha^2, from the steep microfacets of GGX's long tail) is only seen
     // because the sampler's wide stratum makes those microfacets common.
     std::uint64_t seed = 100;
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double alpha : {(0.5 / 128) * (0.5 / 128), 1e-4, 0.01, 0.05, 0.3, 0.8}) {
             const Estimate<1> q = ggx_albedo_average(alpha, vis);
             const Estimate<1> m = ggx_albedo_average_mc(alpha, vis, 400000, ++seed);
@@ -220,7 +220,7 @@ TEST(GgxAverage, AgreesWithMonteCarloWithinFourStandardErrors) {
 }
 
 TEST(GgxAverage, ErrorEstimateBoundsTheDifferenceToAMuchFinerRun) {
-    for (Visibility vis : kBoth)
+    for (Visibility vis : kGgxVisibilities)
         for (double r : {0.5 / 128, 2.5 / 128, 0.1, 0.3, 0.6, 127.5 / 128}) {
             const double alpha = r * r;
             const Estimate<1> ref = ggx_albedo_average(alpha, vis, 1e-12);

@@ -26,11 +26,11 @@ const char* const kMatrixTables[] = {"ltc_sheen_charlie", "ltc_eon"};
 
 // Texels of the 64x64 grid spread over it (normal view, grazing rows, the
 // smallest and largest roughness included).
-struct Texel { int t, a; };
-std::vector<Texel> subset() {
+struct LobeTexel { int t, a; };
+std::vector<LobeTexel> lobe_texels() {
     return {{0, 10}, {0, 63}, {12, 3}, {20, 20}, {30, 50}, {45, 30}, {58, 15}, {63, 2}, {63, 40}};
 }
-double mu_of(int t) { const double u = t / 63.0; return 1.0 - u * u; }
+double lobe_mu(int t) { const double u = t / 63.0; return 1.0 - u * u; }
 double r_of(int a) { return a / 63.0; }
 
 TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
@@ -44,8 +44,8 @@ TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
         const TableDefinition& norm = find_table(c.norm);
         const PreparedTable pa = albedo.prepare(default_settings(albedo));
         const PreparedTable pn = norm.prepare(default_settings(norm));
-        for (const Texel& x : subset()) {
-            const LtcLobe lobe = ltc_table_lobe(find_table(c.matrix), r_of(x.a), mu_of(x.t));
+        for (const LobeTexel& x : lobe_texels()) {
+            const LtcLobe lobe = ltc_table_lobe(find_table(c.matrix), r_of(x.a), lobe_mu(x.t));
             // The tables' roughness coordinate: Charlie alpha = max(r^2, 0.01), EON sigma = r.
             const double r = r_of(x.a);
             EXPECT_EQ(lobe.param, std::string(c.matrix) == "ltc_eon" ? r : std::max(r * r, kLtcSheenMinAlpha));
@@ -53,7 +53,7 @@ TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
             const double ca[2] = {lobe.mu_o, lobe.param};  // (cos_theta, alpha or sigma)
             const double exact = pa.evaluator->evaluate(ca, 0).value[0];
             EXPECT_NEAR(fit.n0, exact, 1e-7 * std::max(1.0, exact)) << "t=" << x.t << " a=" << x.a;
-            const double cn[2] = {r_of(x.a), mu_of(x.t)};  // (roughness, cos_theta)
+            const double cn[2] = {r_of(x.a), lobe_mu(x.t)};  // (roughness, cos_theta)
             EXPECT_EQ(pn.evaluator->evaluate(cn, 0).value[0], fit.n0);
             EXPECT_GT(fit.n0, 0.0);
         }
@@ -62,8 +62,8 @@ TEST(LtcLobes, NormMatchesTheCataloguesAlbedoOfTheLobe) {
 
 TEST(LtcLobes, EveryFittedTexelIsALocalMinimumOfTheObjective) {
     for (const char* id : kMatrixTables) {
-        for (const Texel& x : subset()) {
-            const LtcLobe lobe = ltc_table_lobe(find_table(id), r_of(x.a), mu_of(x.t));
+        for (const LobeTexel& x : lobe_texels()) {
+            const LtcLobe lobe = ltc_table_lobe(find_table(id), r_of(x.a), lobe_mu(x.t));
             const LtcFit fit = fit_ltc(lobe);
             const double j0 = ltc_objective(lobe, fit.params);
             EXPECT_DOUBLE_EQ(j0, fit.objective) << id;
@@ -127,7 +127,7 @@ TEST(LtcLobes, NoTexelSitsInAWorseMinimumThanItsNeighboursContinued) {
             std::vector<LtcFit> fits;
             std::vector<double> objectives;
             for (int i = 0; i < 64; i += 2) {
-                lobes.push_back(ltc_table_lobe(def, r_of(row ? i : 32), mu_of(row ? 56 : i)));
+                lobes.push_back(ltc_table_lobe(def, r_of(row ? i : 32), lobe_mu(row ? 56 : i)));
                 fits.push_back(fit_ltc(lobes.back()));
                 objectives.push_back(fits.back().objective);
             }

@@ -327,7 +327,7 @@ std::string make_png(int w, int h, int color, int bits, const std::vector<png_by
     return file;
 }
 
-double srgb_eotf(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+double srgb_eotf_oracle(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
 }  // namespace
 
 TEST(PngReader, EightBitImagesOfEveryColourTypeReadAsQOver255WithLinearDecoding) {
@@ -365,7 +365,7 @@ TEST(PngReader, SrgbDecodingAppliesTheExactEotfToColourButNotAlpha) {
     ASSERT_EQ(img.pixels.size(), s.size());
     for (std::size_t i = 0; i < s.size(); ++i) {
         const double q = s[i] / 255.0;
-        EXPECT_DOUBLE_EQ(img.pixels[i], i % 4 == 3 ? q : srgb_eotf(q)) << i;
+        EXPECT_DOUBLE_EQ(img.pixels[i], i % 4 == 3 ? q : srgb_eotf_oracle(q)) << i;
     }
     EXPECT_DOUBLE_EQ(img.pixels[1], 10.0 / 255.0 / 12.92);                      // the linear segment
     EXPECT_NEAR(img.pixels[2], 0.2158605, 1e-7);  // 128: the power segment (published sRGB tables)
@@ -373,7 +373,7 @@ TEST(PngReader, SrgbDecodingAppliesTheExactEotfToColourButNotAlpha) {
     write(dir / "g16.png", make_png(2, 1, PNG_COLOR_TYPE_GRAY, 16, {0x80, 0x00, 0x00, 0x10}));
     const ExrImage g = read_table_image(dir / "g16.png", srgb);
     EXPECT_TRUE(g.is_unorm16());
-    EXPECT_DOUBLE_EQ(g.pixels[0], srgb_eotf(0x8000 / 65535.0));
+    EXPECT_DOUBLE_EQ(g.pixels[0], srgb_eotf_oracle(0x8000 / 65535.0));
     EXPECT_DOUBLE_EQ(g.pixels[1], 16 / 65535.0 / 12.92);
     // On float data the sRGB decoding is refused.
     write(dir / "f.npy", npy("<f4", "(1,)", bytes_of(std::vector<float>{0.5f})));
