@@ -60,8 +60,31 @@ TEST(Docs, ListJsonHoldsEveryTableAndPreset) {
         EXPECT_EQ(t.at("axes").size(), d.axes.size()) << d.id;
         EXPECT_EQ(t.at("channels").size(), d.channels.size()) << d.id;
         EXPECT_EQ(t.at("checks").size(), d.checks.size()) << d.id;
+        EXPECT_EQ(t.at("engine_storage"), d.engine_storage ? std::string(to_string(*d.engine_storage)) : "") << d.id;
     }
     EXPECT_EQ(j.at("presets").size(), presets().size());
+}
+
+TEST(Docs, ListNamesTheEngineStorageOfThePresetTablesThatHaveOne) {
+    // unreal_dfg is G16R16 UNORM in Unreal, gltf_ggx an RGBA8 PNG, babylon_brdf
+    // RGBD in RGBA8; ggx_dfg, no engine's, has none.
+    test::TempDir dir;
+    const test::CliResult all = test::run_cli("list", dir), presets_only = test::run_cli("list --presets", dir);
+    ASSERT_EQ(all.exit_code, 0) << all.err;
+    ASSERT_EQ(presets_only.exit_code, 0) << presets_only.err;
+    const std::string text = "\n" + all.out;
+    auto section = [&](const std::string& id) {  // from the table's id line to the blank line after it
+        std::size_t at = text.find("\n" + id + "\n");
+        if (at == std::string::npos) at = text.find("\n" + id + " [");
+        if (at == std::string::npos) return std::string();
+        return text.substr(at + 1, text.find("\n\n", at + 1) - at - 1);
+    };
+    for (const auto& [id, storage] : {std::pair{"unreal_dfg", "unorm16"}, {"gltf_ggx", "unorm8"}, {"babylon_brdf", "rgbd"}}) {
+        EXPECT_NE(section(id).find(std::string("  engine storage: ") + storage), std::string::npos) << id;
+        EXPECT_NE(presets_only.out.find(std::string(id) + " [engine: " + storage + "]"), std::string::npos) << id;
+    }
+    ASSERT_FALSE(section("ggx_dfg").empty());
+    EXPECT_EQ(section("ggx_dfg").find("engine storage"), std::string::npos);
 }
 
 TEST(Docs, ListPresetsJsonHoldsOnlyThePresets) {
