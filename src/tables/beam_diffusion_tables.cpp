@@ -23,6 +23,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace beam_diffusion_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // The pbrt-v4 commit read for the definitions.
@@ -406,8 +407,10 @@ TableDefinition pbrt_table(TableDefinition d, std::string id, std::string descri
 }
 
 }  // namespace
+}  // namespace beam_diffusion_family
 
 void register_beam_diffusion_family(FamilyEntries& family) {
+    using namespace beam_diffusion_family;
     family.families.push_back(
         {"", "Subsurface scattering: photon beam diffusion (pbrt-v4's BSSRDFTable)",
          "Habel et al. 2013's photon beam diffusion as pbrt-v4 defines it (`BeamDiffusionSS`, `BeamDiffusionMS`, "

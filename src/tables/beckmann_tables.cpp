@@ -19,6 +19,7 @@
 #include "tables/shared_results.h"
 
 namespace brdflut {
+namespace beckmann_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Absolute tolerance of the quadrature at standard quality: with an honest
@@ -417,8 +418,10 @@ std::vector<TableDefinition> cook_torrance_ltc_layer() {
 }
 
 }  // namespace
+}  // namespace beckmann_family
 
 void register_beckmann_family(FamilyEntries& family) {
+    using namespace beckmann_family;
     family.families.push_back(
         {"", "Beckmann microfacet",
         "The Beckmann distribution D = exp(-tan^2(theta_h)/alpha^2)/(pi alpha^2 cos^4(theta_h)) (alpha = "

@@ -15,6 +15,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace burley_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // A short closed form (a few exp, expm1, pow calls): a generous count of
@@ -118,8 +119,10 @@ AxisSpec albedo_axis(int count) {
 }
 
 }  // namespace
+}  // namespace burley_family
 
 ModelOption tables::burley_scaling_option() {
+    using namespace burley_family;
     return {"scaling",
             "Burley: how d follows from the mean free path l and the albedo A, d = l / s(A): searchlight "
             "(1.85 - A + 7|A - 0.8|^3), diffuse_transmission (1.9 - A + 3.5 (A - 0.8)^2) or dmfp "
@@ -129,6 +132,7 @@ ModelOption tables::burley_scaling_option() {
 }
 
 void register_burley_family(FamilyEntries& family) {
+    using namespace burley_family;
     family.families.push_back(
         {"", "Subsurface scattering: Burley normalized diffusion",
          "Christensen and Burley 2015's profile R(r) = A s (e^(-s r) + e^(-s r/3)) / (8 pi r), s = 1/d: its "

@@ -20,6 +20,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace dipole_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Estimated relative error of a value computed by a short closed form
@@ -225,8 +226,10 @@ TableDefinition base(std::string id, std::string description, std::vector<AxisSp
 }
 
 }  // namespace
+}  // namespace dipole_family
 
 void register_dipole_family(FamilyEntries& family) {
+    using namespace dipole_family;
     family.families.push_back(
         {"", "Subsurface scattering: the dipole",
         "The dipole diffusion model of Jensen et al. 2001: the diffuse reflectance profile R_d(r), its "

@@ -9,6 +9,7 @@
 
 namespace brdflut {
 
+namespace disney_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // E_avg of the subsurface lobe at r = 0, where F_ss90 = 0 and f depends on
@@ -56,8 +57,10 @@ double clearcoat_average_over_mu(double gloss) {
 }
 
 }  // namespace
+}  // namespace disney_family
 
 void register_disney_family(FamilyEntries& family) {
+    using namespace disney_family;
     family.families.push_back(
         {"", "Disney BRDF lobes",
         "The albedo E(mu, p) = integral of f cos(theta_i) dw_i and its average of the lobes of Burley "

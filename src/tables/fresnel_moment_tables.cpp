@@ -18,6 +18,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace fresnel_moment_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // With an honest estimate below it and float rounding, every stored value is
@@ -315,8 +316,10 @@ nlohmann::json cycles_model(bool ior) {
 }
 
 }  // namespace
+}  // namespace fresnel_moment_family
 
 void register_fresnel_moment_family(FamilyEntries& family) {
+    using namespace fresnel_moment_family;
     family.families.push_back(
         {"", "Fresnel-weighted GGX moments",
          "Moments of the GGX lobe under the Fresnel weights engines factor out of their tables, computed "

@@ -16,6 +16,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace fresnel_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Absolute tolerance of the averages at each quality.
@@ -234,8 +235,10 @@ private:
 const std::vector<double> kCheckEtas{1.0, 1.2, 1.33, 1.5, 2.0, 2.9};
 
 }  // namespace
+}  // namespace fresnel_family
 
 void register_fresnel_family(FamilyEntries& family) {
+    using namespace fresnel_family;
     family.families.push_back(
         {"", "Fresnel reflectance",
         "The exact unpolarized reflectance F = (Rs + Rp)/2 of a smooth interface (Born and Wolf), mu = "

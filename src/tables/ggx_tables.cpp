@@ -11,6 +11,7 @@
 #include "tables/shared_results.h"
 
 namespace brdflut {
+namespace ggx_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Absolute tolerance of the quadrature at each quality.
@@ -106,10 +107,12 @@ TableDefinition make(Kind kind, std::string id, std::string description,
 }
 
 }  // namespace
+}  // namespace ggx_family
 
-double tables::ggx_table_tolerance(Quality q) { return kTolerances.at(q); }
+double tables::ggx_table_tolerance(Quality q) { return ggx_family::kTolerances.at(q); }
 
 Estimate<2> tables::ggx_split_sum_shared(double mu, double alpha, Visibility vis, double abs_tol, bool* computed) {
+    using namespace ggx_family;
     // 262,144 texels at most, ~25 MB.
     static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
     return cache.get({tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol), tables::key_enum(vis)},
@@ -117,6 +120,7 @@ Estimate<2> tables::ggx_split_sum_shared(double mu, double alpha, Visibility vis
 }
 
 void register_ggx_family(FamilyEntries& family) {
+    using namespace ggx_family;
     family.families.push_back(
         {"", "GGX microfacet: split sums and albedo",
         "The single-scattering GGX BRDF (Walter et al. 2007) with F = 1 and the height-correlated Smith "

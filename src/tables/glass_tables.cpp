@@ -12,6 +12,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace glass_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 constexpr tables::Tolerances kTolerances = tables::kGlassTolerances;
@@ -39,10 +40,12 @@ const char* kMcSampler =
     "mixture's density, the visible normals' density as control variate (regression estimate)";
 
 }  // namespace
+}  // namespace glass_family
 
 namespace tables {
 
 nlohmann::json glass_model(Visibility vis, bool inside) {
+    using namespace glass_family;
     return {{"bsdf", "GGX rough dielectric (Walter et al. 2007), single scattering"},
             {"distribution", "ggx"},
             {"visibility", to_string(vis)},
@@ -59,12 +62,14 @@ nlohmann::json glass_model(Visibility vis, bool inside) {
 }
 
 AxisSpec ior_axis(int count) {
+    using namespace glass_family;
     return {Axis{"ior", 1.0, 3.0, count, Placement::center, Warp::ior_z}, 1.0, HUGE_VAL,
             "n: index of refraction of the denser medium over the other (>= 1); outside tables "
             "use eta = n, inside tables eta = 1/n"};
 }
 
 Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol) {
+    using namespace glass_family;
     const double eta = inside ? 1.0 / n : n;
     if (!(alpha > 0.0) || !(n >= 1.0)) return ggx_glass_average(alpha, eta, vis, abs_tol);
     static SharedResults<4, Estimate<1>> transmission(1 << 14);
@@ -78,6 +83,7 @@ Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, d
 
 }  // namespace tables
 
+namespace glass_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 enum class Kind { directional, average };
@@ -170,8 +176,10 @@ ClosedFormCheck index_matched_check(Kind kind) {
 }
 
 }  // namespace
+}  // namespace glass_family
 
 void register_glass_family(FamilyEntries& family) {
+    using namespace glass_family;
     family.families.push_back(
         {"", "Rough glass",
         "The reflection and transmission albedos E_R and E_T of the GGX rough dielectric of Walter et al. "

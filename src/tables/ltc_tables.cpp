@@ -28,6 +28,7 @@
 #include "tables/shared_results.h"
 
 namespace brdflut {
+namespace ltc_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 using Layout = LtcLayout;
@@ -218,14 +219,17 @@ std::vector<ClosedFormCheck> layout_checks(const std::string& id, Layout layout,
 }
 
 }  // namespace
+}  // namespace ltc_family
 
 std::uint64_t ltc_lobe_key(const std::string& name) {
+    using namespace ltc_family;
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a
     for (unsigned char ch : name) h = (h ^ ch) * 1099511628211ull;
     return h;
 }
 
 TableDefinition ltc_table(LtcTableSpec e) {
+    using namespace ltc_family;
     TableDefinition d;
     d.id = e.id;
     d.description = e.description;
@@ -320,7 +324,8 @@ TableDefinition ltc_table(LtcTableSpec e) {
     return d;
 }
 
-LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, const Options& options) {
+LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, const ltc_family::Options& options) {
+    using namespace ltc_family;
     LtcTexelLobe lobe;
     {
         LobeRegistry& reg = lobe_registry();
@@ -338,6 +343,7 @@ LtcLobe ltc_table_lobe(const TableDefinition& def, double roughness, double mu, 
 
 // The LTC family: GGX (Heitz's ltc_1 and ltc_2, HDRP's matrix), the Charlie
 // sheen and EON, each with its error table.
+namespace ltc_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // The lobe of a texel: the roughness coordinate r mapped to the lobe's
@@ -483,8 +489,10 @@ LtcTableSpec spec(LtcLobeKind kind, Layout layout, std::string id, std::string p
 }
 
 }  // namespace
+}  // namespace ltc_family
 
 void register_ltc_family(FamilyEntries& family) {
+    using namespace ltc_family;
     family.families.push_back(
         {"", "Area lights: linearly transformed cosines",
         "Linearly transformed cosines (Heitz, Dupuy, Hill and Neubelt 2016) shade polygonal lights in "
@@ -545,6 +553,7 @@ void register_ltc_family(FamilyEntries& family) {
 }
 
 std::vector<TableDefinition> hdrp_ltc_layer(const HdrpLtcLayer& layer) {
+    using namespace ltc_family;
     const std::string matrix_id = "hdrp_ltc_" + layer.name, error_id = matrix_id + "_error";
     const auto spec = [&](Layout layout, const std::string& id, const std::string& description,
                           const std::string& layout_text, const std::vector<std::string>& channels) {

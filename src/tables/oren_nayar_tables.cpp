@@ -10,6 +10,7 @@
 
 namespace brdflut {
 
+namespace oren_nayar_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // The qualitative model's albedo in closed form:
@@ -35,8 +36,10 @@ double oren_nayar_average_of_closed_form(double sigma) {
 }
 
 }  // namespace
+}  // namespace oren_nayar_family
 
 void register_oren_nayar_family(FamilyEntries& family) {
+    using namespace oren_nayar_family;
     family.families.push_back(
         {"", "Rough diffuse: Oren-Nayar, Fujii and EON",
         "The albedo and its average of three rough diffuse models at rho = 1: the qualitative Oren-Nayar "

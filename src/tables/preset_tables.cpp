@@ -28,6 +28,7 @@
 #include "tables/sheen_charlie_check.h"
 
 namespace brdflut {
+namespace preset_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 AxisSpec cos_theta(int count, Placement placement, Warp warp = Warp::linear) {
@@ -732,13 +733,16 @@ std::vector<PresetDeclaration> declare() {
 }
 
 }  // namespace
+}  // namespace preset_family
 
 const std::vector<tables::PresetDeclaration>& tables::preset_declarations() {
+    using namespace preset_family;
     static const std::vector<PresetDeclaration> all = declare();
     return all;
 }
 
 const std::vector<Preset>& presets() {
+    using namespace preset_family;
     static const std::vector<Preset> all = [] {
         std::vector<Preset> out;
         for (const tables::PresetDeclaration& p : tables::preset_declarations()) out.push_back(p.preset);
@@ -748,6 +752,7 @@ const std::vector<Preset>& presets() {
 }
 
 void register_preset_family(FamilyEntries& family) {
+    using namespace preset_family;
     family.families.push_back(
         {"", "Engine presets",
          "The tables engines ship, each exactly in the engine's layout (grid, texel placement, axis warps, "

@@ -85,6 +85,7 @@ std::array<double, 2> tables::charlie_moments_by_half_vector(double mu_o, double
     return total;
 }
 
+namespace sheen_charlie_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Absolute tolerance of the quadrature at standard quality: with an honest
@@ -368,8 +369,10 @@ std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
 }
 
 }  // namespace
+}  // namespace sheen_charlie_family
 
 void register_sheen_charlie_family(FamilyEntries& family) {
+    using namespace sheen_charlie_family;
     family.families.push_back(
         {"", "Charlie sheen with the Estevez-Kulla shadowing",
          "The Charlie distribution D = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi) with the shadowing of "

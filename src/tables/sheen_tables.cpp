@@ -9,6 +9,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace sheen_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 // Absolute tolerance of the quadrature at each quality.
@@ -45,8 +46,10 @@ private:
 };
 
 }  // namespace
+}  // namespace sheen_family
 
 nlohmann::json tables::charlie_sheen_model() {
+    using namespace sheen_family;
     return {{"brdf", "Charlie sheen (Estevez and Kulla 2017), no Fresnel"},
             {"distribution", "charlie: (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)"},
             {"visibility", "neubelt: 1 / (4 (mu_i + mu_o - mu_i mu_o))"},
@@ -54,6 +57,7 @@ nlohmann::json tables::charlie_sheen_model() {
 }
 
 void register_sheen_family(FamilyEntries& family) {
+    using namespace sheen_family;
     family.families.push_back(
         {"", "Charlie sheen",
         "The albedo of the Charlie distribution D = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi) "

@@ -18,6 +18,7 @@
 #include "tables/registry.h"
 
 namespace brdflut {
+namespace skin_family {  // this family's own names, apart from the other families' in a unity build
 namespace {
 
 constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(1e-10);
@@ -219,8 +220,10 @@ TableDefinition skin_table(std::string id, std::string description) {
 }
 
 }  // namespace
+}  // namespace skin_family
 
 void register_skin_family(FamilyEntries& family) {
+    using namespace skin_family;
     family.families.push_back(
         {"", "Pre-integrated skin",
          "Penner and Borshukov 2011's pre-integrated skin: a sphere of radius 1/curvature lit at angle theta, "
