@@ -37,8 +37,9 @@ lap "sanitizer ctest"
 
 echo "== libFuzzer on the table readers"
 mkdir -p "$log/corpus"
-./build-sanitize/fuzz_read_table -fork="$jobs" -ignore_crashes=0 -ignore_timeouts=0 -ignore_ooms=0 -max_total_time="${BRDFLUT_FUZZ_SECONDS:-30}" -seed=1 -timeout=10 \
-    -rss_limit_mb=2048 -max_len=65536 "$log/corpus" tests/fuzz/corpus > "$log/fuzz.txt" 2>&1 ||
+./build-sanitize/fuzz_read_table -fork="$jobs" -ignore_crashes=0 -ignore_timeouts=0 -ignore_ooms=0 \
+    -max_total_time="${BRDFLUT_FUZZ_SECONDS:-30}" -seed=1 -timeout=10 -rss_limit_mb=2048 \
+    -max_len=65536 "$log/corpus" tests/fuzz/corpus > "$log/fuzz.txt" 2>&1 ||
     { tail -n 60 "$log/fuzz.txt"; exit 1; }
 grep -E "^#[0-9]+: cov:" "$log/fuzz.txt" | tail -n 1 || true  # inputs run, coverage, crashes (0/0/0)
 lap "fuzzing"

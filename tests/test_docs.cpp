@@ -79,7 +79,8 @@ TEST(Docs, ListNamesTheEngineStorageOfThePresetTablesThatHaveOne) {
         if (at == std::string::npos) return std::string();
         return text.substr(at + 1, text.find("\n\n", at + 1) - at - 1);
     };
-    for (const auto& [id, storage] : {std::pair{"unreal_dfg", "unorm16"}, {"gltf_ggx", "unorm8"}, {"babylon_brdf", "rgbd"}}) {
+    for (const auto& [id, storage] :
+         {std::pair{"unreal_dfg", "unorm16"}, {"gltf_ggx", "unorm8"}, {"babylon_brdf", "rgbd"}}) {
         EXPECT_NE(section(id).find(std::string("  engine storage: ") + storage), std::string::npos) << id;
         EXPECT_NE(presets_only.out.find(std::string(id) + " [engine: " + storage + "]"), std::string::npos) << id;
     }

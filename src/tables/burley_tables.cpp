@@ -122,7 +122,6 @@ AxisSpec albedo_axis(int count) {
 }  // namespace burley_family
 
 ModelOption tables::burley_scaling_option() {
-    using namespace burley_family;
     return {"scaling",
             "Burley: how d follows from the mean free path l and the albedo A, d = l / s(A): searchlight "
             "(1.85 - A + 7|A - 0.8|^3), diffuse_transmission (1.9 - A + 3.5 (A - 0.8)^2) or dmfp "

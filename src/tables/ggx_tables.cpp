@@ -112,7 +112,6 @@ TableDefinition make(Kind kind, std::string id, std::string description,
 double tables::ggx_table_tolerance(Quality q) { return ggx_family::kTolerances.at(q); }
 
 Estimate<2> tables::ggx_split_sum_shared(double mu, double alpha, Visibility vis, double abs_tol, bool* computed) {
-    using namespace ggx_family;
     // 262,144 texels at most, ~25 MB.
     static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
     return cache.get({tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol), tables::key_enum(vis)},

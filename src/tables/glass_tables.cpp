@@ -45,7 +45,6 @@ const char* kMcSampler =
 namespace tables {
 
 nlohmann::json glass_model(Visibility vis, bool inside) {
-    using namespace glass_family;
     return {{"bsdf", "GGX rough dielectric (Walter et al. 2007), single scattering"},
             {"distribution", "ggx"},
             {"visibility", to_string(vis)},
@@ -62,14 +61,12 @@ nlohmann::json glass_model(Visibility vis, bool inside) {
 }
 
 AxisSpec ior_axis(int count) {
-    using namespace glass_family;
     return {Axis{"ior", 1.0, 3.0, count, Placement::center, Warp::ior_z}, 1.0, HUGE_VAL,
             "n: index of refraction of the denser medium over the other (>= 1); outside tables "
             "use eta = n, inside tables eta = 1/n"};
 }
 
 Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol) {
-    using namespace glass_family;
     const double eta = inside ? 1.0 / n : n;
     if (!(alpha > 0.0) || !(n >= 1.0)) return ggx_glass_average(alpha, eta, vis, abs_tol);
     static SharedResults<4, Estimate<1>> transmission(1 << 14);

@@ -222,7 +222,6 @@ std::vector<ClosedFormCheck> layout_checks(const std::string& id, Layout layout,
 }  // namespace ltc_family
 
 std::uint64_t ltc_lobe_key(const std::string& name) {
-    using namespace ltc_family;
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a
     for (unsigned char ch : name) h = (h ^ ch) * 1099511628211ull;
     return h;

@@ -742,7 +742,6 @@ const std::vector<tables::PresetDeclaration>& tables::preset_declarations() {
 }
 
 const std::vector<Preset>& presets() {
-    using namespace preset_family;
     static const std::vector<Preset> all = [] {
         std::vector<Preset> out;
         for (const tables::PresetDeclaration& p : tables::preset_declarations()) out.push_back(p.preset);

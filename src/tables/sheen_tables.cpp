@@ -49,7 +49,6 @@ private:
 }  // namespace sheen_family
 
 nlohmann::json tables::charlie_sheen_model() {
-    using namespace sheen_family;
     return {{"brdf", "Charlie sheen (Estevez and Kulla 2017), no Fresnel"},
             {"distribution", "charlie: (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)"},
             {"visibility", "neubelt: 1 / (4 (mu_i + mu_o - mu_i mu_o))"},
