@@ -44,6 +44,28 @@ TEST(Cli, QualityIsRecordedInTheMetadata) {
     EXPECT_EQ(img.metadata.at("method").at("abs_tolerance"), 1e-5);
 }
 
+TEST(Cli, InspectPrintsOneMetadataMemberByJsonPointer) {
+    TempDir dir;
+    ASSERT_EQ(run_cli("generate ggx_albedo_avg --size 4 -q -o '" + dir.path().string() + "'", dir).exit_code, 0);
+    std::string file = dir / "ggx_albedo_avg.exr";
+    file.insert(0, 1, '\'').push_back('\'');
+    const auto table = run_cli("inspect " + file + " --metadata /table", dir);
+    EXPECT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_EQ(table.out, "\"ggx_albedo_avg\"\n");
+    // Arrays of numbers or strings print on one line.
+    const auto axes = run_cli("inspect " + file + " --metadata /axes/0", dir);
+    EXPECT_EQ(axes.exit_code, 0) << axes.err;
+    EXPECT_NE(axes.out.find("\"name\": \"alpha\""), std::string::npos) << axes.out;
+    const auto channels = run_cli("inspect " + file + " --metadata /channels", dir);
+    EXPECT_EQ(channels.out.find('\n'), channels.out.size() - 1) << channels.out;
+    const auto missing = run_cli("inspect " + file + " --metadata /nope", dir);
+    EXPECT_EQ(missing.exit_code, 2);
+    EXPECT_NE(missing.err.find("no such member; its top level: axes"), std::string::npos) << missing.err;
+    const auto bad = run_cli("inspect " + file + " --metadata nope", dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("is not a JSON pointer"), std::string::npos) << bad.err;
+}
+
 TEST(Cli, GenerateWithHalfPixelsAndNonSquareSize) {
     TempDir dir;
     const auto r = run_cli("generate ggx_albedo --size 8x4 --pixel half -q -o '" + dir.path().string() + "'", dir);

@@ -17,14 +17,9 @@
 #include "test_support.h"
 
 using namespace brdflut;
+using brdflut::test::burley_skin;
 
 namespace {
-
-SkinProfile burley_skin() {
-    return {RadialProfile::burley(0.8, 1.0 / burley_scaling(0.8, BurleyScaling::dmfp)),
-            RadialProfile::burley(0.5, 0.5 / burley_scaling(0.5, BurleyScaling::dmfp)),
-            RadialProfile::burley(0.3, 0.25 / burley_scaling(0.3, BurleyScaling::dmfp))};
-}
 
 SkinProfile dipole_skin() {
     const MeasuredMaterial& m = find_measured_material("skin1");

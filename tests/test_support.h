@@ -12,13 +12,23 @@
 
 #include <gtest/gtest.h>
 
+#include "brdflut/burley.h"
 #include "brdflut/catalogue.h"
 #include "brdflut/exr.h"
 #include "brdflut/generate.h"
+#include "brdflut/skin.h"
 #include "integrate/ggx_simd.h"
 #include "brdflut/table.h"
 
 namespace brdflut::test {
+
+// Burley's profile per channel at the skin tables' default albedo (0.8,
+// 0.5, 0.3) and mean free path (1, 0.5, 0.25 mm), with the dmfp scaling.
+inline SkinProfile burley_skin() {
+    return {RadialProfile::burley(0.8, 1.0 / burley_scaling(0.8, BurleyScaling::dmfp)),
+            RadialProfile::burley(0.5, 0.5 / burley_scaling(0.5, BurleyScaling::dmfp)),
+            RadialProfile::burley(0.3, 0.25 / burley_scaling(0.3, BurleyScaling::dmfp))};
+}
 
 // The image of a table's values as stored in a float file, without
 // metadata, as read_exr returns it.

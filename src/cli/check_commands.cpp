@@ -1,4 +1,5 @@
 // verify, compare, inspect and sample: the checking side of the tool.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
@@ -240,8 +241,50 @@ ReadOptions read_options(const ReadArgs& a) {
     return o;
 }
 
-int run_inspect(const std::string& file, const ReadArgs& read, bool json) {
+namespace {
+// JSON indented by two spaces, with each array of numbers or strings on
+// one line (per-channel figures read as a row).
+void dump_with_flat_arrays(const nlohmann::json& j, int indent, std::string& out) {
+    const bool container = j.is_object() || j.is_array();
+    const bool flat = j.is_array() && std::all_of(j.begin(), j.end(), [](const nlohmann::json& e) { return e.is_primitive(); });
+    if (!container || j.empty() || flat) {
+        out += j.dump();
+        return;
+    }
+    const std::string pad(static_cast<std::size_t>(indent), ' ');
+    out += j.is_object() ? "{\n" : "[\n";
+    bool first = true;
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        out += (first ? "" : ",\n") + pad + "  ";
+        first = false;
+        if (j.is_object()) out += nlohmann::json(it.key()).dump() + ": ";
+        dump_with_flat_arrays(*it, indent + 2, out);
+    }
+    out += "\n" + pad + (j.is_object() ? "}" : "]");
+}
+}  // namespace
+
+int run_inspect(const std::string& file, const ReadArgs& read, bool json, const std::string& member) {
     const ExrImage img = read_table_image(file, read_options(read));
+    if (!member.empty()) {
+        if (!img.has_metadata) throw Error("--metadata " + member + ": " + file + " has no brdflut metadata");
+        nlohmann::json::json_pointer ptr;
+        try {
+            ptr = nlohmann::json::json_pointer(member);
+        } catch (const nlohmann::json::exception&) {
+            throw Error("--metadata '" + member + "' is not a JSON pointer; allowed: /member/member..., e.g. /method");
+        }
+        std::string text;
+        try {
+            dump_with_flat_arrays(img.metadata.at(ptr), 0, text);
+        } catch (const nlohmann::json::exception&) {
+            std::string names;
+            for (const auto& [k, v] : img.metadata.items()) names += (names.empty() ? "" : ", ") + k;
+            throw Error("--metadata " + member + ": the file's metadata has no such member; its top level: " + names);
+        }
+        std::cout << text << "\n";
+        return 0;
+    }
     const std::vector<ChannelStats> stats = channel_stats(img);
     if (json) {
         nlohmann::json j;

@@ -87,7 +87,9 @@ struct IdentifyArgs {
 };
 int run_identify(const IdentifyArgs& a);
 
-int run_inspect(const std::string& file, const ReadArgs& read, bool json);
+// member: a JSON pointer into the metadata; when given, only that member is
+// printed (as JSON).
+int run_inspect(const std::string& file, const ReadArgs& read, bool json, const std::string& member = {});
 
 struct SampleArgs {
     DescribeArgs describe;

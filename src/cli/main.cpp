@@ -166,6 +166,9 @@ int main(int argc, char** argv) {
     ins->add_option("file", inspect_file, kFileHelp)->required();
     add_read_options(*ins, inspect_read);
     ins->add_flag("--json", inspect_json, "Print as JSON");
+    std::string inspect_member;
+    ins->add_option("--metadata", inspect_member,
+                    "Print only this member of the brdflut metadata, as a JSON pointer, e.g. /method/separable_error");
 
     CLI::App* smp = app.add_subcommand("sample", "Value of a LUT at a parameter point, filtered as a GPU does");
     SampleArgs s;
@@ -207,7 +210,7 @@ int main(int argc, char** argv) {
             return run_compare(c);
         }
         if (app.got_subcommand(idf)) return run_identify(id);
-        if (app.got_subcommand(ins)) return run_inspect(inspect_file, inspect_read, inspect_json);
+        if (app.got_subcommand(ins)) return run_inspect(inspect_file, inspect_read, inspect_json, inspect_member);
         if (app.got_subcommand(smp)) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);

@@ -692,6 +692,13 @@ std::vector<PresetDeclaration> declare() {
                     "albedos) and rhoEff (100), exact; --construction pbrt_midpoint gives pbrt's own values",
                     PixelType::float32},
                    {}});
+    // Unreal's SSProfiles kernels (sss_kernel_tables.cpp names this preset).
+    all.push_back({{"unreal_sss",
+                    "Unreal Engine's SSProfiles row of a Separable subsurface profile: its three mirrored kernels "
+                    "(13, 9 and 6 one-sided taps, weights per channel and offset in mm), from the profile's "
+                    "FalloffColor",
+                    PixelType::float32},
+                   {}});
     // The LTC presets' tables are fits (ltc_tables.cpp), which name these
     // presets.
     // Beside ltc_2: the F82-tint moment on its grid, so that an area light

@@ -4,10 +4,12 @@
 #include <functional>
 #include <vector>
 
+#include "brdflut/burley.h"
 #include "brdflut/catalogue.h"
 #include "brdflut/furnace.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/quadrature.h"
+#include "brdflut/skin.h"
 
 namespace brdflut {
 
@@ -98,6 +100,24 @@ nlohmann::json charlie_sheen_model();
 // The Burley profile's `--scaling` option (burley_tables.cpp), one help text
 // for every table that takes it.
 ModelOption burley_scaling_option();
+
+// "r,g,b": three finite numbers in [lo, hi] (lo excluded when open_lo);
+// throws brdflut::Error naming the option, the value and `allowed`.
+std::array<double, 3> parse_rgb(const std::string& option, const std::string& s, double lo, bool open_lo, double hi,
+                                const std::string& allowed);
+
+// Burley's profile per colour channel (skin_tables.cpp), for every table
+// that takes one: the options --surface-albedo, --dmfp (mm) and --scaling,
+// their values, the profiles (d = l / s(A) per channel) and their model
+// metadata.
+struct BurleyRgb {
+    std::array<double, 3> albedo, dmfp;
+    BurleyScaling scaling;
+};
+std::vector<ModelOption> burley_rgb_options();
+BurleyRgb burley_rgb(const TableSettings& s);
+SkinProfile burley_rgb_profile(const BurleyRgb& b);
+nlohmann::json burley_rgb_model(const BurleyRgb& b);
 
 // Number of standard errors a Monte Carlo texel's error estimate spans.
 inline constexpr double kMcErrorSigmas = 4.0;

@@ -23,34 +23,6 @@ namespace {
 
 constexpr tables::Tolerances kTolerances = tables::quadrature_tolerances(1e-10);
 
-const char* kDefaultAlbedo = "0.8,0.5,0.3";
-const char* kDefaultDmfp = "1.0,0.5,0.25";
-
-// "r,g,b": three finite numbers in [lo, hi] (lo excluded when open_lo).
-std::array<double, 3> parse_rgb(const std::string& option, const std::string& s, double lo, bool open_lo, double hi,
-                                const std::string& allowed) {
-    std::array<double, 3> out{};
-    std::size_t start = 0;
-    auto bad = [&]() { return Error("--" + option + " '" + s + "' is not valid; allowed: r,g,b, " + allowed); };
-    for (std::size_t c = 0; c < 3; ++c) {
-        const std::size_t comma = s.find(',', start);
-        if ((c < 2) != (comma != std::string::npos)) throw bad();
-        const std::string part = s.substr(start, c < 2 ? comma - start : std::string::npos);
-        std::size_t used = 0;
-        double v = NAN;
-        try {
-            v = std::stod(part, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (part.empty() || used != part.size() || !std::isfinite(v) || v < lo || (open_lo && v == lo) || v > hi)
-            throw bad();
-        out[c] = v;
-        start = comma + 1;
-    }
-    return out;
-}
-
 class SkinEvaluator final : public TexelEvaluator {
 public:
     SkinEvaluator(SkinProfile p, SkinGeometry g, const TableSettings& s)
@@ -177,26 +149,6 @@ std::vector<ClosedFormCheck> skin_checks(std::function<SkinProfile()> profile, S
     return checks;
 }
 
-struct BurleyParams {
-    std::array<double, 3> albedo, dmfp;
-    BurleyScaling scaling;
-};
-
-BurleyParams burley_params(const TableSettings& s) {
-    BurleyParams b{};
-    b.albedo = parse_rgb("surface-albedo", tables::param(s, "surface-albedo"), 0.0, true, 1.0, "three numbers in (0, 1]");
-    b.dmfp = parse_rgb("dmfp", tables::param(s, "dmfp"), 0.0, true, 1e3, "three lengths in mm, > 0");
-    b.scaling = burley_scaling_from_string(tables::param(s, "scaling"));
-    return b;
-}
-
-SkinProfile burley_profile_of(const BurleyParams& b) {
-    auto one = [&](std::size_t c) {
-        return RadialProfile::burley(b.albedo[c], b.dmfp[c] / burley_scaling(b.albedo[c], b.scaling));
-    };
-    return {one(0), one(1), one(2)};
-}
-
 // Jensen et al. 2001's skin1, eta 1.3 with the Egan-Hilgeman F_dr, in mm.
 SkinProfile dipole_skin_profile() {
     const MeasuredMaterial& m = find_measured_material("skin1");
@@ -222,6 +174,58 @@ TableDefinition skin_table(std::string id, std::string description) {
 }  // namespace
 }  // namespace skin_family
 
+std::array<double, 3> tables::parse_rgb(const std::string& option, const std::string& s, double lo, bool open_lo,
+                                        double hi, const std::string& allowed) {
+    std::array<double, 3> out{};
+    std::size_t start = 0;
+    auto bad = [&]() { return Error("--" + option + " '" + s + "' is not valid; allowed: r,g,b, " + allowed); };
+    for (std::size_t c = 0; c < 3; ++c) {
+        const std::size_t comma = s.find(',', start);
+        if ((c < 2) != (comma != std::string::npos)) throw bad();
+        const std::string part = s.substr(start, c < 2 ? comma - start : std::string::npos);
+        std::size_t used = 0;
+        double v = NAN;
+        try {
+            v = std::stod(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (part.empty() || used != part.size() || !std::isfinite(v) || v < lo || (open_lo && v == lo) || v > hi)
+            throw bad();
+        out[c] = v;
+        start = comma + 1;
+    }
+    return out;
+}
+
+std::vector<ModelOption> tables::burley_rgb_options() {
+    return {{"surface-albedo", "Burley: the albedo A per channel, r,g,b in (0, 1]", "0.8,0.5,0.3", {}},
+            {"dmfp", "Burley: the mean free path l per channel, r,g,b in mm (d = l / s(A))", "1.0,0.5,0.25", {}},
+            tables::burley_scaling_option()};
+}
+
+tables::BurleyRgb tables::burley_rgb(const TableSettings& s) {
+    BurleyRgb b{};
+    b.albedo = parse_rgb("surface-albedo", param(s, "surface-albedo"), 0.0, true, 1.0, "three numbers in (0, 1]");
+    b.dmfp = parse_rgb("dmfp", param(s, "dmfp"), 0.0, true, 1e3, "three lengths in mm, > 0");
+    b.scaling = burley_scaling_from_string(param(s, "scaling"));
+    return b;
+}
+
+SkinProfile tables::burley_rgb_profile(const BurleyRgb& b) {
+    auto one = [&](std::size_t c) {
+        return RadialProfile::burley(b.albedo[c], b.dmfp[c] / burley_scaling(b.albedo[c], b.scaling));
+    };
+    return {one(0), one(1), one(2)};
+}
+
+nlohmann::json tables::burley_rgb_model(const BurleyRgb& b) {
+    return {{"profile", "Burley normalized diffusion (Christensen and Burley 2015)"},
+            {"albedo", b.albedo},
+            {"mean_free_path_mm", b.dmfp},
+            {"scaling", to_string(b.scaling)}};
+}
+
 void register_skin_family(FamilyEntries& family) {
     using namespace skin_family;
     family.families.push_back(
@@ -244,27 +248,20 @@ void register_skin_family(FamilyEntries& family) {
         TableDefinition d = skin_table(
             "skin_preintegrated_burley",
             "Pre-integrated skin D(N.L, curvature) for Burley's profile, over the sphere, per channel");
-        d.options = {{"surface-albedo", "skin_preintegrated_burley: Burley's albedo A per channel, r,g,b in (0, 1]",
-                      kDefaultAlbedo, {}},
-                     {"dmfp", "skin_preintegrated_burley: the mean free path l per channel, r,g,b in mm (d = l / s(A))",
-                      kDefaultDmfp, {}},
-                     tables::burley_scaling_option()};
+        d.options = tables::burley_rgb_options();
         d.prepare = [](const TableSettings& s) {
-            const BurleyParams b = burley_params(s);
+            const tables::BurleyRgb b = tables::burley_rgb(s);
             PreparedTable p;
-            p.evaluator = std::make_unique<SkinEvaluator>(burley_profile_of(b), SkinGeometry::sphere, s);
-            p.model = {{"profile", "Burley normalized diffusion (Christensen and Burley 2015)"},
-                       {"albedo", b.albedo},
-                       {"mean_free_path_mm", b.dmfp},
-                       {"scaling", to_string(b.scaling)},
-                       {"geometry", geometry_json(SkinGeometry::sphere)},
-                       {"curvature_unit", "1/mm"}};
+            p.evaluator = std::make_unique<SkinEvaluator>(tables::burley_rgb_profile(b), SkinGeometry::sphere, s);
+            p.model = tables::burley_rgb_model(b);
+            p.model["geometry"] = geometry_json(SkinGeometry::sphere);
+            p.model["curvature_unit"] = "1/mm";
             p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
                                                        : tables::quadrature_method(kRule, kTolerances.at(s.quality));
             return p;
         };
-        const BurleyParams defaults = burley_params(default_settings(d));
-        d.checks = skin_checks([defaults] { return burley_profile_of(defaults); }, SkinGeometry::sphere);
+        const tables::BurleyRgb defaults = tables::burley_rgb(default_settings(d));
+        d.checks = skin_checks([defaults] { return tables::burley_rgb_profile(defaults); }, SkinGeometry::sphere);
         out.push_back(std::move(d));
     }
     auto fixed_profile = [&](std::string id, std::string description, std::function<SkinProfile()> profile,
