@@ -306,3 +306,24 @@ TEST(SeparableSssTables, UnrealsExactRuleMisplacesLessThanItsEngineRule) {
             EXPECT_LT(x, e) << "kernel " << k << " channel " << c;
         }
 }
+
+TEST(SeparableSssTables, UnrealTransmissionIsBurleysTransmissionAtTheOffsetDistanceWithAlbedoOne) {
+    const TableDefinition& def = find_table("unreal_sss_transmission");
+    TableSettings s = default_settings(def);
+    const std::array<double, 3> A = {0.8, 0.5, 0.3}, l = {1.0, 0.5, 0.25};
+    for (const char* rule : {"engine", "exact"}) {
+        s.params["transmission-rule"] = rule;
+        const bool engine = std::string(rule) == "engine";
+        const Table t = test::generate_fresh(def, s, 2);
+        ASSERT_EQ(t.values.size(), 32u * 4u);
+        for (std::size_t i = 0; i < 32; ++i) {
+            const double r = 50.0 * static_cast<double>(i) / 32.0;  // Unreal's i/32 of 50 mm
+            const bool last = i == 31;
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double want = engine && last ? 0.0 : burley_transmission((r + (engine ? 0.6 : 0.0)) / l[c], A[c], BurleyScaling::dmfp) / A[c];
+                EXPECT_NEAR(t.values[i * 4 + c], want, 1e-15 + 1e-14 * want) << rule << " texel " << i << " channel " << c;
+            }
+            EXPECT_NEAR(t.values[i * 4 + 3], engine && last ? 0.0 : std::exp(-r), 1e-15) << rule << " texel " << i;
+        }
+    }
+}

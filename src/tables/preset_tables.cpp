@@ -694,9 +694,9 @@ std::vector<PresetDeclaration> declare() {
                    {}});
     // Unreal's SSProfiles kernels (sss_kernel_tables.cpp names this preset).
     all.push_back({{"unreal_sss",
-                    "Unreal Engine's SSProfiles row of a Separable subsurface profile: its three mirrored kernels "
-                    "(13, 9 and 6 one-sided taps, weights per channel and offset in mm), from the profile's "
-                    "FalloffColor",
+                    "Unreal Engine's SSProfiles rows: the three mirrored kernels of a Separable profile (13, 9 "
+                    "and 6 one-sided taps, weights per channel and offset in mm) and the 32-sample transmission "
+                    "profile of a Burley profile",
                     PixelType::float32},
                    {}});
     // The LTC presets' tables are fits (ltc_tables.cpp), which name these

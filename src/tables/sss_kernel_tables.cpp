@@ -2,10 +2,13 @@
 // diffusion profile: the taps' offsets and per-channel weights, with the
 // error of the separable approximation in the metadata; d'Eon and Luebke's
 // six-Gaussian skin profile, Burley's normalized diffusion, and Unreal
-// Engine's three kernels of a "Separable" subsurface profile.
+// Engine's three kernels of a "Separable" subsurface profile; and the
+// Burley transmission profile of Unreal's subsurface profile rows.
 #include <cmath>
+#include <limits>
 #include <memory>
 
+#include "brdflut/burley.h"
 #include "brdflut/error.h"
 #include "brdflut/math.h"
 #include "brdflut/separable_sss.h"
@@ -230,6 +233,42 @@ const char* kUnrealSource =
     "13, 9, 6 after the SubsurfaceColor texel), read at the public UE4 mirror folgerwang/UnrealEngine "
     "@2b46ba7b94939f6b0e5bb2418c00222e0fc23049";
 
+// Unreal's Burley transmission profile (ComputeTransmissionProfileBurley):
+// per channel 0.25 (e^(-x) + 3 e^(-x/3)) with the albedo 1, x = s(A) (r +
+// offset) / l; A = e^(-r extinction); the texel at `black_from` and beyond 0.
+constexpr double kUnrealRadiusOffsetMm = 0.6;  // ProfileRadiusOffset 0.06 (cm) * 10
+
+class TransmissionEvaluator final : public TexelEvaluator {
+public:
+    TransmissionEvaluator(const tables::BurleyRgb& b, double extinction, double offset, double black_from)
+        : extinction_(extinction), offset_(offset), black_from_(black_from) {
+        for (std::size_t c = 0; c < 3; ++c) rate_[c] = burley_scaling(b.albedo[c], b.scaling) / b.dmfp[c];
+    }
+    TexelValue evaluate(const double* c, std::uint64_t) const override {
+        TexelValue out;
+        const double r = c[0];
+        if (r >= black_from_) return out;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double x = rate_[k] * (r + offset_);
+            out.value[k] = burley_cdf_complement(x);
+            out.error[k] = 4.0 * std::numeric_limits<double>::epsilon() * out.value[k];
+        }
+        out.value[3] = std::exp(-r * extinction_);
+        out.error[3] = 2.0 * std::numeric_limits<double>::epsilon() * out.value[3];
+        return out;
+    }
+
+private:
+    std::array<double, 3> rate_{};
+    double extinction_, offset_, black_from_;
+};
+
+const char* kUnrealTransmissionSource =
+    "EpicGames/UnrealEngine Engine/Source/Runtime/Engine/Private/Rendering/BurleyNormalizedSSS.cpp "
+    "(ComputeTransmissionProfileBurley, ProfileRadiusOffset 0.06, 32 samples to MaxTransmissionProfileDistance "
+    "5 cm, last pixel black) and SubsurfaceScatteringMath.h (BurleyNormalized::TransmissionProfile), read at the "
+    "public mirror unicorn2022/UE5.8.0 @5d9a05c15b1f8c6d7b3354b360677ce30d688149";
+
 }  // namespace
 }  // namespace sss_kernel_family
 
@@ -251,7 +290,8 @@ void register_sss_kernel_family(FamilyEntries& family) {
          "metadata reports the separable error per channel (method.separable_error): the misplaced energy, "
          "the total-variation distance between the 2-D kernel the two passes apply, w_a w_b, and the "
          "profile's own mass over each pair of cells, and the outside energy, the part of the profile "
-         "beyond the taps' reach."});
+         "beyond the taps' reach. The family also holds the other table of Unreal's subsurface profile rows, "
+         "the 32-sample Burley transmission profile (unreal_sss_transmission)."});
     std::vector<TableDefinition>& out = family.tables;
     {
         TableDefinition d = profile_kernel_table(
@@ -425,6 +465,79 @@ void register_sss_kernel_family(FamilyEntries& family) {
                      }
                      base += n;
                  }
+                 return r;
+             }});
+        out.push_back(std::move(d));
+    }
+    {
+        TableDefinition d;
+        d.id = "unreal_sss_transmission";
+        d.description = "UE SSProfiles Burley transmission profile: 32 distances to 50 mm, per channel, and the shadow "
+                        "term";
+        d.preset = "unreal_sss";
+        d.engine_source = kUnrealTransmissionSource;
+        d.axes = {{Axis{"distance", 0.0, 48.4375, 32, Placement::endpoints, Warp::linear}, 0.0, 1e4,
+                   "distance through the object in mm: Unreal's i/32 of 50 mm (i = 0..31) at world unit scale 0.1"}};
+        d.channels = {"R: transmission A (e^(-x)/4 + 3 e^(-x/3)/4) at A = 1, x = s(A) (r + offset) / l, red",
+                      "G: green", "B: blue", "A: exp(-r * extinction scale), the shadow term"};
+        d.searched_by_identify = false;
+        d.options = tables::burley_rgb_options();
+        d.options.push_back({"extinction-scale", "unreal_sss_transmission: Unreal's ExtinctionScale, per mm, 0 to 100",
+                             "1", {}});
+        d.options.push_back({"transmission-rule",
+                             "unreal_sss_transmission: engine (Unreal's: evaluated at r + 0.6 mm, its "
+                             "ProfileRadiusOffset, and the last texel set to 0) or exact (at r itself)",
+                             "engine",
+                             {"engine", "exact"}});
+        d.prepare = [](const TableSettings& s) {
+            const tables::BurleyRgb b = tables::burley_rgb(s);
+            const double extinction = tables::parse_number("extinction-scale", tables::param(s, "extinction-scale"));
+            if (!(extinction >= 0.0 && extinction <= 100.0))
+                throw Error("--extinction-scale " + tables::param(s, "extinction-scale") +
+                            " is out of range; allowed: 0 to 100 (per mm)");
+            const bool engine = tables::param(s, "transmission-rule") == "engine";
+            PreparedTable out;
+            out.evaluator = std::make_unique<TransmissionEvaluator>(b, extinction, engine ? kUnrealRadiusOffsetMm : 0.0,
+                                                                    engine ? s.axes.at(0).highest() : HUGE_VAL);
+            out.model = tables::burley_rgb_model(b);
+            out.model["surface_albedo_in_profile"] = "1 (Unreal leaves the albedo to the recombine pass)";
+            out.model["extinction_scale_per_mm"] = extinction;
+            out.model["transmission_rule"] = engine ? "engine" : "exact";
+            out.model["radius_offset_mm"] = engine ? kUnrealRadiusOffsetMm : 0.0;
+            out.model["last_texel"] = engine ? "0 (Unreal's bMakeLastPixelBlack)" : "computed";
+            out.model["tint"] = "TransmissionTintColor is white here";
+            out.model["preset"] = "unreal_sss";
+            out.model["engine_source"] = kUnrealTransmissionSource;
+            out.method = {{"name", "closed_form"},
+                          {"formula", "(e^(-x)/4 + 3 e^(-x/3)/4), the complement of Burley's CDF, in exponentials"}};
+            return out;
+        };
+        d.checks.push_back(
+            {"transmission vs quadrature of Burley's radial density beyond s (r + 0.6) / l; shadow; last texel 0", 1e-12,
+             [](const TexelEvaluator& e) {
+                 const std::array<double, 3> A = {0.8, 0.5, 0.3}, l = {1.0, 0.5, 0.25};
+                 tables::CheckResult r{0.0, ""};
+                 for (double mm : {0.0, 0.4, 1.5625, 7.0, 30.0}) {
+                     const TexelValue v = e.evaluate(&mm, 0);
+                     for (std::size_t c = 0; c < 4; ++c) {
+                         double want = std::exp(-mm);
+                         if (c < 3) {
+                             const double x = burley_scaling(A[c], BurleyScaling::dmfp) * (mm + 0.6) / l[c];
+                             AdaptiveOptions opt{1e-15, 400};
+                             want = integrate_adaptive<1>(
+                                        [](double t) { return std::array<double, 1>{burley_radial_density(t)}; }, x,
+                                        x + 300.0, opt)
+                                        .value[0];
+                         }
+                         const double err = std::abs(v.value[c] - want);
+                         if (!(err <= r.first) || r.second.empty())
+                             r = {err, std::to_string(mm) + " mm, channel " + "RGBA"[c]};
+                     }
+                 }
+                 const double last = 48.4375;
+                 const TexelValue v = e.evaluate(&last, 31);
+                 for (double x : v.value)
+                     if (x != 0.0) return tables::CheckResult{std::abs(x), "the last texel is not 0"};
                  return r;
              }});
         out.push_back(std::move(d));
