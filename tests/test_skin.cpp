@@ -185,3 +185,38 @@ TEST(SkinTables, HeldOutTexelsWithin1e7OfAnIndependentQuadratureAndSameForAnyThr
             }
     }
 }
+
+TEST(SkinTables, MaterialxConstructionIsPennersRingByItsThirtyTwoPointMidpointRule) {
+    const TableDefinition& def = find_table("skin_preintegrated_burley");
+    TableSettings s = default_settings(def);
+    s.axes[0].count = 9;
+    s.axes[1].count = 7;
+    s.params["skin-construction"] = "materialx";
+    const Table t = test::generate_fresh(def, s, 2);
+    const SkinProfile p = burley_skin();
+    double farthest = 0.0;
+    for (int j = 0; j < 7; ++j)
+        for (int i = 0; i < 9; ++i) {
+            const double nl = s.axes[0].value(i), k = s.axes[1].value(j);
+            const double rho = 1.0 / std::max(k, 0.01);
+            for (std::size_t ch = 0; ch < 3; ++ch) {
+                // x_n = -pi + (n + 1/2) 2 pi/32; the ring's chord 2 rho |sin(x/2)|.
+                double num = 0.0, den = 0.0;
+                for (int n = 0; n < 32; ++n) {
+                    const double x = -kPi + (n + 0.5) * kPi / 16.0;
+                    const double r = 2.0 * rho * std::abs(std::sin(x / 2.0));
+                    const double R = p[ch].value(r);  // the same shape up to a constant factor
+                    num += R * std::max(0.0, std::cos(std::acos(nl) + x));
+                    den += R;
+                }
+                const std::size_t at = (static_cast<std::size_t>(j) * 9 + static_cast<std::size_t>(i)) * 3 + ch;
+                EXPECT_NEAR(t.values[at], num / den, 1e-13) << "texel " << i << "," << j;
+                const double exact = preintegrated_skin(p, SkinGeometry::sphere, nl, k, 1e-12).value[ch];
+                farthest = std::max(farthest, std::abs(t.values[at] - exact));
+            }
+        }
+    // MaterialX's rule is not the sphere's integral.
+    EXPECT_GT(farthest, 1e-3);
+    s.method = Method::monte_carlo;
+    EXPECT_THROW(def.prepare(s), Error);
+}

@@ -6,12 +6,14 @@
 // Penner and Borshukov 2011, "Pre-Integrated Skin Shading" (GPU Pro 2)
 // d'Eon and Luebke 2007, "Advanced Techniques for Realistic Real-Time Skin
 // Rendering" (GPU Gems 3, ch. 14)
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "brdflut/burley.h"
 #include "brdflut/dipole.h"
 #include "brdflut/error.h"
+#include "brdflut/math.h"
 #include "brdflut/random.h"
 #include "brdflut/skin.h"
 #include "tables/checks.h"
@@ -51,6 +53,40 @@ private:
     long long samples_;
     std::uint64_t seed_;
     double abs_tol_;
+};
+
+// MaterialX's mx_integrate_burley_diffusion: Penner's ring for Burley's
+// profile (e^(-r/d) + e^(-r/(3d))) / max(r, 1e-8) by a 32-point midpoint
+// rule in x, at radius 1/max(curvature, 0.01); the table's d per channel.
+class MaterialxSkinEvaluator final : public TexelEvaluator {
+public:
+    explicit MaterialxSkinEvaluator(const SkinProfile& p) {
+        for (std::size_t c = 0; c < 3; ++c) d_[c] = p[c].scale();
+    }
+    TexelValue evaluate(const double* c, std::uint64_t) const override {
+        TexelValue out;
+        const double theta = std::acos(std::clamp(c[0], -1.0, 1.0));
+        const double radius = 1.0 / std::max(c[1], 0.01);
+        constexpr int kSamples = 32;
+        std::array<double, 3> sum_d{}, sum_r{};
+        for (int i = 0; i < kSamples; ++i) {
+            const double x = -kPi + (i + 0.5) * (2.0 * kPi / kSamples);
+            const double dist = radius * std::abs(2.0 * std::sin(0.5 * x));
+            for (std::size_t k = 0; k < 3; ++k) {
+                const double R = (std::exp(-dist / d_[k]) + std::exp(-dist / (3.0 * d_[k]))) / std::max(dist, 1e-8);
+                sum_d[k] += R * std::max(std::cos(theta + x), 0.0);
+                sum_r[k] += R;
+            }
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            out.value[k] = sum_d[k] / sum_r[k];
+            out.error[k] = 0.0;  // the construction is the value: no integral is claimed
+        }
+        return out;
+    }
+
+private:
+    std::array<double, 3> d_{};
 };
 
 AxisSpec n_dot_l_axis() {
@@ -249,15 +285,34 @@ void register_skin_family(FamilyEntries& family) {
             "skin_preintegrated_burley",
             "Pre-integrated skin D(N.L, curvature) for Burley's profile, over the sphere, per channel");
         d.options = tables::burley_rgb_options();
+        d.options.push_back({"skin-construction",
+                             "skin_preintegrated_burley: exact (the sphere, by adaptive quadrature) or materialx "
+                             "(MaterialX's mx_integrate_burley_diffusion: Penner's ring by a 32-point midpoint rule "
+                             "at radius 1/max(curvature, 0.01), with this table's d)",
+                             "exact",
+                             {"exact", "materialx"}});
         d.prepare = [](const TableSettings& s) {
             const tables::BurleyRgb b = tables::burley_rgb(s);
+            const bool materialx = tables::param(s, "skin-construction") == "materialx";
+            if (materialx && s.method == Method::monte_carlo)
+                throw Error("--skin-construction materialx is MaterialX's own rule; allowed with it: --method quadrature");
             PreparedTable p;
-            p.evaluator = std::make_unique<SkinEvaluator>(tables::burley_rgb_profile(b), SkinGeometry::sphere, s);
+            if (materialx) p.evaluator = std::make_unique<MaterialxSkinEvaluator>(tables::burley_rgb_profile(b));
+            else p.evaluator = std::make_unique<SkinEvaluator>(tables::burley_rgb_profile(b), SkinGeometry::sphere, s);
             p.model = tables::burley_rgb_model(b);
-            p.model["geometry"] = geometry_json(SkinGeometry::sphere);
+            p.model["geometry"] = materialx ? geometry_json(SkinGeometry::ring) : geometry_json(SkinGeometry::sphere);
             p.model["curvature_unit"] = "1/mm";
-            p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
-                                                       : tables::quadrature_method(kRule, kTolerances.at(s.quality));
+            p.model["construction"] = materialx ? "materialx" : "exact";
+            if (materialx)
+                p.method = {{"name", "materialx_construction"},
+                            {"rule", "MaterialX mx_integrate_burley_diffusion (AcademySoftwareFoundation/MaterialX "
+                                     "libraries/pbrlib/genglsl/lib/mx_microfacet_diffuse.glsl "
+                                     "@cb6e8c9981d616b594aef6aa1dea2f14a7cc99c9): 32-point midpoint rule over the ring, radius "
+                                     "1/max(curvature, 0.01), profile (e^(-r/d) + e^(-r/(3d))) / max(r, 1e-8)"},
+                            {"error", "not estimated (0): the values are MaterialX's rule, not the integral"}};
+            else
+                p.method = s.method == Method::monte_carlo ? tables::monte_carlo_method(kMcSampler, s)
+                                                           : tables::quadrature_method(kRule, kTolerances.at(s.quality));
             return p;
         };
         const tables::BurleyRgb defaults = tables::burley_rgb(default_settings(d));
