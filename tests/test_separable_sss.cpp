@@ -327,3 +327,17 @@ TEST(SeparableSssTables, UnrealTransmissionIsBurleysTransmissionAtTheOffsetDista
         }
     }
 }
+
+TEST(SeparableSssTables, UnrealsFiveGaussiansAreTheRedChannelOfDeonsSkinFitBeyondTheNarrowest) {
+    // Unreal's SeparableSSS_Profile quotes d'Eon and Luebke's red channel,
+    // dropping the narrowest Gaussian: a second source for those numbers.
+    const TableDefinition& def = find_table("unreal_sss_kernel");
+    const PreparedTable p = def.prepare(default_settings(def));
+    const auto& unreal = p.model.at("gaussians");
+    const std::vector<SkinGaussian>& deon = deon_skin_gaussians();
+    ASSERT_EQ(unreal.size() + 1, deon.size());
+    for (std::size_t i = 0; i < unreal.size(); ++i) {
+        EXPECT_EQ(unreal[i].at("variance_mm2").get<double>(), deon[i + 1].variance) << i;
+        EXPECT_EQ(unreal[i].at("weight").get<double>(), deon[i + 1].weight[0]) << i;
+    }
+}
