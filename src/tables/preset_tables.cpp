@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "brdflut/cloth_invggx.h"
 #include "brdflut/generic_lobe.h"
 #include "brdflut/ggx_lobe.h"
 #include "brdflut/ggx_integrals.h"
@@ -109,6 +110,24 @@ AxisSpec cycles_ior(int count) {
     a.axis.max = HUGE_VAL;  // z = 1
     a.axis.clamp_lo = ior_of_z(1e-4);
     a.axis.clamp_hi = ior_of_z(0.99);
+    return a;
+}
+
+// Unreal's energy tables: alpha = max(r, 0.01)^2 over roughness cell
+// centres, and the glass table's index n = 1 + 2 z over cell centres.
+AxisSpec unreal_alpha(int count) {
+    AxisSpec a = tables::alpha_axis(count);
+    a.axis.clamp_lo = 1e-4;
+    a.meaning = "GGX alpha = max(r, 0.01)^2, rows linear in perceptual roughness r (GetGGXBasis)";
+    return a;
+}
+AxisSpec unreal_ior(int count) {
+    AxisSpec a = tables::ior_axis(count);
+    a.axis.warp = Warp::linear;
+    a.axis.min = 1.0;
+    a.axis.max = 3.0;
+    a.axis.placement = Placement::center;
+    a.meaning = "index of refraction n = 1 + 2 z over the texel centres z (Unreal's EtaIn)";
     return a;
 }
 
@@ -255,6 +274,15 @@ ClosedFormCheck charlie_moment(int c, int moment, SheenShadowing s, bool alpha_a
             }};
 }
 
+// Unreal's legacy cloth albedo in channel 0 of a table over (mu, alpha) at
+// alpha = 1, where D_InvGGX is 1/pi.
+ClosedFormCheck inv_ggx_cloth_at_one() {
+    return {"E at alpha = 1 vs (1/(1 - mu) + mu ln(mu)/(1 - mu)^2)/2", 1e-8 + 1e-12, [](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.1, 0.5, 0.9}, {1.0}), 0,
+                                  [](const auto& p) { return inv_ggx_cloth_albedo_alpha_one(p[0]); });
+            }};
+}
+
 // HDRP's fabric Lambert albedo 1 - r^2/2 in channel c.
 ClosedFormCheck fabric_lambert(int c) {
     return {"fabric Lambert albedo vs 1 - r^2/2", 1e-8 + 1e-12, [c](const TexelEvaluator& e) {
@@ -280,14 +308,20 @@ ClosedFormCheck albedo_avg_at_alpha_one() {
 
 // Glass at n = 1, E_R + E_T: the straight path masked on both sides; axes
 // (alpha, mu, n) or, for the average, (alpha, n).
-ClosedFormCheck glass_index_matched() {
-    return {"E at n = 1 vs G2(mu, mu) (1 + Lambda(mu)) (no interface)", 2 * kGlass + 1e-12,
-            [](const TexelEvaluator& e) {
+// Channel c of a glass table with axes (alpha, mu, n), or (mu, alpha, n)
+// when mu_first, at n = 1.
+ClosedFormCheck glass_index_matched(int c = 0, bool mu_first = false) {
+    return {std::string(c == 0 ? "E" : "channel " + std::string(1, "RGBA"[c]) + ":") +
+                " at n = 1 vs G2(mu, mu) (1 + Lambda(mu)) (no interface)",
+            2 * kGlass + 1e-12, [c, mu_first](const TexelEvaluator& e) {
                 std::vector<std::array<double, 3>> pts;
                 for (double alpha : {0.05, 0.3, 1.0})
-                    for (double mu : {0.05, 0.4, 0.9}) pts.push_back({alpha, mu, 1.0});
-                return worst_over(e, pts, 0, [](const auto& p) {
-                    return glass_index_matched_transmission(p[1], p[0], Visibility::height_correlated);
+                    for (double mu : {0.05, 0.4, 0.9})
+                        pts.push_back(mu_first ? std::array<double, 3>{mu, alpha, 1.0}
+                                               : std::array<double, 3>{alpha, mu, 1.0});
+                return worst_over(e, pts, c, [mu_first](const auto& p) {
+                    const double mu = mu_first ? p[0] : p[1], alpha = mu_first ? p[1] : p[0];
+                    return glass_index_matched_transmission(mu, alpha, Visibility::height_correlated);
                 });
             }};
 }
@@ -351,6 +385,20 @@ const char* kUnrealSource =
     "EpicGames/UnrealEngine Engine/Source/Runtime/Renderer/Private/SystemTextures.cpp (PreintegratedGF: "
     "Vis_SmithJointApprox, m = roughness^2, 128x32 cell centres, G16R16), the same code in UE4 and UE 5.x "
     "(read at the public mirror unicorn2022/UE5.8.0 @5d9a05c15b1f8c6d7b3354b360677ce30d688149)";
+const char* kUnrealGlassEnergySource =
+    "EpicGames/UnrealEngine Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 1: "
+    "SampleRefraction, GGXEvalReflection and GGXEvalRefraction, Smith G2 height-correlated; EtaIn = 1 + 2 z), "
+    "PathTracing/Material/PathTracingGlossy.ush (alpha = max(roughness, 0.01)^2), "
+    "Engine/Source/Runtime/Renderer/Private/ShadingEnergyConservation.cpp (32^3 G16R16, 2^14 samples, shipped "
+    "as ShadingEnergyConservationData.h GGXGlassValues), read at the public mirror unicorn2022/UE5.8.0 "
+    "@5d9a05c15b1f8c6d7b3354b360677ce30d688149";
+const char* kUnrealLegacyClothSource =
+    "EpicGames/UnrealEngine Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 2 "
+    "without SUBSTRATE_ENABLED: D_InvGGX(Alpha.x * Alpha.y, NoH), Vis_Cloth), BRDF.ush (D_InvGGX, Vis_Cloth), "
+    "PathTracing/Material/PathTracingGlossy.ush (alpha = max(roughness, 0.01)^2), "
+    "Engine/Source/Runtime/Renderer/Private/ShadingEnergyConservation.cpp (32x32 G16R16, shipped as "
+    "ShadingEnergyConservationData.h ClothSpecValues), read at the public mirror unicorn2022/UE5.8.0 "
+    "@5d9a05c15b1f8c6d7b3354b360677ce30d688149";
 const char* kGodotSource =
     "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/integrate_dfg.glsl "
     "@e8387d695efee663e2f427bd427792a6f0c633f0 (PR #103934)";
@@ -380,6 +428,14 @@ std::vector<PresetDeclaration> declare() {
     nlohmann::json materialx_model = hc;
     materialx_model["roughness"] = "alpha = the row coordinate (linear); the sheen's Charlie alpha is the same";
     materialx_model["sheen"] = tables::charlie_sheen_model();
+    const nlohmann::json unreal_legacy_cloth_model = {
+        {"brdf", "Unreal legacy cloth: D_InvGGX(alpha^2, n.h) Vis_Cloth(mu_o, mu_i), no Fresnel"},
+        {"roughness", "alpha = max(r, 0.01)^2"},
+        {"fresnel", "1; G holds the moment of (1 - v.h)^5"}};
+    nlohmann::json unreal_glass_model = tables::glass_model(Visibility::height_correlated, false);
+    unreal_glass_model.erase("side");
+    unreal_glass_model["side"] = "R: eta = n (outside in); G: eta = 1/n (inside out)";
+    unreal_glass_model["roughness"] = "alpha = max(r, 0.01)^2";
     nlohmann::json glass_model = tables::glass_model(Visibility::height_correlated, false);
     glass_model.erase("side");
     glass_model["side"] = "ggx_glass_E: eta = n; ggx_glass_inv_E: eta = 1/n";
@@ -417,7 +473,8 @@ std::vector<PresetDeclaration> declare() {
     all.push_back(
         {{"unreal",
           "Unreal Engine's PreintegratedGF (UE4 and UE5): 128x32 scale and bias, GGX with Vis_SmithJointApprox; "
-          "UE5's 32x32 cloth energy table (Charlie with Neubelt's visibility: E and the Fresnel moment)",
+          "UE5's 32^3 GGX glass energy table (E_R + E_T from outside and inside) and 32x32 cloth energy tables "
+          "(E and the Fresnel moment: Substrate's Charlie with Neubelt's visibility, the legacy D_InvGGX)",
           PixelType::float32},
          {{"unreal_dfg",
            "UE PreintegratedGF: specular = F0 * R + G, GGX with Vis_SmithJointApprox (a = alpha = r^2)",
@@ -428,6 +485,26 @@ std::vector<PresetDeclaration> declare() {
            ggx_model(Visibility::smith_joint_approx),
            {checks::split_at_one(0, 1, false), checks::joint_approx_generic()},
            Storage::unorm16},  // G16R16 UNORM
+          {"unreal_ggx_glass_energy",
+           "UE5 ShadingEnergyGGXGlassTexture: E_R + E_T of rough glass from outside (R) and inside (G), 32^3",
+           kUnrealGlassEnergySource,
+           {cos_theta(32, Placement::center), unreal_alpha(32), unreal_ior(32)},
+           {{"R: E_R + E_T at eta = n (outside in)", {{"ggx_glass_albedo", 2}}},
+            {"G: E_R + E_T at eta = 1/n (inside out)", {{"ggx_glass_albedo_inside", 2}}}},
+           {},
+           unreal_glass_model,
+           {checks::glass_index_matched(0, true), checks::glass_index_matched(1, true)},
+           Storage::unorm16},  // G16R16 UNORM, as ShadingEnergyConservationData.h
+          {"unreal_cloth_energy_legacy",
+           "UE5 ShadingEnergyClothSpecTexture without Substrate: (E, F) of D_InvGGX with Vis_Cloth, 32x32",
+           kUnrealLegacyClothSource,
+           {cos_theta(32, Placement::center), unreal_alpha(32)},
+           {{"E: integral of D_InvGGX Vis_Cloth cos(theta_i) dw_i", {{"cloth_invggx_moments", 0}}},
+            {"F: integral of D_InvGGX Vis_Cloth (1 - v.h)^5 cos(theta_i) dw_i", {{"cloth_invggx_moments", 1}}}},
+           {},
+           unreal_legacy_cloth_model,
+           {checks::inv_ggx_cloth_at_one()},
+           Storage::unorm16},  // G16R16 UNORM, as ShadingEnergyConservationData.h
           {"unreal_cloth_energy",
            "UE5 ShadingEnergyClothSpecTexture: (E, F) of Charlie with Neubelt's visibility, alpha = row coordinate",
            "Engine/Shaders/Private/ShadingEnergyConservationTable.usf (BUILD_ENERGY_TABLE 2, SUBSTRATE_ENABLED: "
@@ -767,7 +844,7 @@ void register_preset_family(FamilyEntries& family) {
          "or the ratio of two such sums, with the options the core tables take; the metadata records each "
          "channel's expression), evaluated from the core tables themselves, so that compare, verify and "
          "inspect work on them unchanged: Filament's DFG with cloth, Unreal's PreintegratedGF (and the "
-         "Karis 2013 course-notes variant), HDRP's PreIntegratedFGD, Cycles' GGX and rough glass albedo "
+         "Karis 2013 course-notes variant) and UE5's glass and cloth energy tables, HDRP's PreIntegratedFGD, Cycles' GGX and rough glass albedo "
          "tables with their clamps, glTF-IBL-Sampler's LUTs, Godot's Forward+ DFG texture (and the Mobile "
          "fit as a table), three.js's DFGLUTData, MaterialX's albedo table, OSL BSDL's GGX energy table, "
          "Babylon.js's environment BRDF, USD Storm's dome-light BRDF and Bevy's DFG LUT. Each names the "
