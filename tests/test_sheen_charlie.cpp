@@ -219,3 +219,27 @@ TEST(SheenCharlieLtc, HdrpCharlieTablesPassVerifyAndAreTheSameForAnyThreadCount)
         EXPECT_EQ(a.method.dump(), b.method.dump()) << id;
     }
 }
+
+TEST(SheenCharlieLtc, HeitzLayoutLayerFitsTheSameLobeOnLtc1sGridAndIsTheSameForAnyThreadCount) {
+    // The norm is the lobe's albedo: sheen_charlie_moments E at alpha = r^2.
+    const PreparedTable norm = find_table("ltc_sheen_charlie_ek_norm").prepare(
+        default_settings(find_table("ltc_sheen_charlie_ek_norm")));
+    const PreparedTable moments =
+        find_table("sheen_charlie_moments").prepare(default_settings(find_table("sheen_charlie_moments")));
+    for (double r : {0.3, 0.6, 1.0})
+        for (double mu : {0.2, 0.7}) {
+            const double n_at[2] = {r, mu}, m_at[2] = {mu, r * r};
+            EXPECT_NEAR(norm.evaluator->evaluate(n_at, 0).value[0], moments.evaluator->evaluate(m_at, 0).value[0],
+                        2e-8)
+                << r << " " << mu;
+        }
+    for (const char* id : {"ltc_sheen_charlie_ek", "ltc_sheen_charlie_ek_error"}) {
+        const TableDefinition& def = find_table(id);
+        EXPECT_EQ(def.preset, "ltc");
+        TableSettings s = default_settings(def);
+        s.axes[0].count = 4;
+        s.axes[1].count = 3;
+        const Table a = test::generate_fresh(def, s, 1), b = test::generate_fresh(def, s, 2);
+        EXPECT_EQ(a.values, b.values) << id;
+    }
+}

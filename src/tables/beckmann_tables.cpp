@@ -391,7 +391,7 @@ const char* kCookTorranceSource =
     "grid: Generated/LtcData.BRDF_CookTorrance.cs), LTCAreaLight.hlsl (the packing)";
 
 std::vector<TableDefinition> cook_torrance_ltc_layer() {
-    HdrpLtcLayer layer;
+    LtcLayer layer;
     layer.name = "cook_torrance";
     layer.matrix_description =
         "HDRP LTC Cook-Torrance matrix (Beckmann, V-cavity G): the inverse divided by its m22 (alpha >= 0.002)";

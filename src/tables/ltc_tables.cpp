@@ -551,30 +551,51 @@ void register_ltc_family(FamilyEntries& family) {
                                  kHdrpPacking, kHdrpMatrixChannels)));
 }
 
-std::vector<TableDefinition> hdrp_ltc_layer(const HdrpLtcLayer& layer) {
+namespace ltc_family {
+namespace {
+// A table of a layer: its layout, id and texts on the layer's grid.
+TableDefinition layer_table(const LtcLayer& layer, Layout layout, const std::string& preset, const std::string& id,
+                            const std::string& description, const std::string& layout_text,
+                            const std::vector<std::string>& channels, const std::string& error_id) {
+    LtcTableSpec e;
+    e.id = id;
+    e.preset = preset;
+    e.description = description;
+    e.layout = layout;
+    e.layout_text = layout_text;
+    e.channels = channels;
+    e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+                   layer.roughness_meaning, "", "alpha"};
+    e.model = layer.model;
+    e.engine_source = layer.engine_source;
+    e.norms_rule = layer.norms_rule;
+    e.report_table = error_id;
+    e.lobe = layer.lobe;
+    if (layout == Layout::norm) e.checks = layer.norm_checks;
+    return ltc_table(std::move(e));
+}
+}  // namespace
+}  // namespace ltc_family
+
+std::vector<TableDefinition> hdrp_ltc_layer(const LtcLayer& layer) {
     using namespace ltc_family;
     const std::string matrix_id = "hdrp_ltc_" + layer.name, error_id = matrix_id + "_error";
-    const auto spec = [&](Layout layout, const std::string& id, const std::string& description,
-                          const std::string& layout_text, const std::vector<std::string>& channels) {
-        LtcTableSpec e;
-        e.id = id;
-        e.preset = "hdrp_ltc";
-        e.description = description;
-        e.layout = layout;
-        e.layout_text = layout_text;
-        e.channels = channels;
-        e.roughness = {Axis{"roughness", 0.0, 1.0, 64, Placement::endpoints, Warp::linear}, 0.0, 1.0,
-                       layer.roughness_meaning, "", "alpha"};
-        e.model = layer.model;
-        e.engine_source = layer.engine_source;
-        e.norms_rule = layer.norms_rule;
-        e.report_table = error_id;
-        e.lobe = layer.lobe;
-        return ltc_table(std::move(e));
-    };
-    return {spec(Layout::hdrp_matrix, matrix_id, layer.matrix_description, kHdrpPacking, kHdrpMatrixChannels),
-            spec(Layout::report, error_id, layer.error_description, "error report on the grid of " + matrix_id,
-                 kReportChannels)};
+    return {layer_table(layer, Layout::hdrp_matrix, "hdrp_ltc", matrix_id, layer.matrix_description, kHdrpPacking,
+                        kHdrpMatrixChannels, error_id),
+            layer_table(layer, Layout::report, "hdrp_ltc", error_id, layer.error_description,
+                        "error report on the grid of " + matrix_id, kReportChannels, error_id)};
+}
+
+std::vector<TableDefinition> heitz_ltc_layer(const LtcLayer& layer) {
+    using namespace ltc_family;
+    const std::string matrix_id = "ltc_" + layer.name, norm_id = matrix_id + "_norm", error_id = matrix_id + "_error";
+    return {layer_table(layer, Layout::heitz_matrix, "ltc", matrix_id, layer.matrix_description,
+                        "ltc_1's layout: " + std::string(kHeitzShader), kHeitzMatrixChannels, error_id),
+            layer_table(layer, Layout::norm, "ltc", norm_id, layer.norm_description,
+                        matrix_id + "'s grid: the lobe = n0 times the LTC integral", {"n0: integral of f cos(theta_i) dw_i"},
+                        error_id),
+            layer_table(layer, Layout::report, "ltc", error_id, layer.error_description,
+                        "error report on the grid of " + matrix_id, kReportChannels, error_id)};
 }
 
 }  // namespace brdflut

@@ -59,22 +59,30 @@ struct LtcTableSpec {
 // spec's lobe for ltc_table_lobe.
 TableDefinition ltc_table(LtcTableSpec spec);
 
-// HDRP's LTC layer of a lobe fitted through the generic path: the matrix
-// table hdrp_ltc_<name> in HDRP's packing and its per-texel error table
-// hdrp_ltc_<name>_error, on HDRP's grid (64x64; roughness r = i/63 at end
-// points, the lobe's alpha = max(r^2, its floor); rows cos(theta) =
-// 1 - (j/63)^2), in the hdrp_ltc preset.
-struct HdrpLtcLayer {
+// An LTC layer of a lobe fitted through the generic path, on the 64x64 grid
+// HDRP and Heitz share (roughness r = i/63 at end points, the lobe's
+// alpha = max(r^2, its floor); rows cos(theta) = 1 - (j/63)^2).
+struct LtcLayer {
     std::string name;                // the ids' stem, e.g. "cook_torrance"
     std::string matrix_description;  // the matrix table's one line
     std::string error_description;   // the error table's one line
+    std::string norm_description;    // the norm table's one line (Heitz's layout)
     std::string roughness_meaning;   // the roughness axis's text, with the alpha floor
     std::function<nlohmann::json(const std::map<std::string, std::string>& options)> model;
     std::string engine_source;
     std::string norms_rule;
     LtcTexelLobe lobe;
+    // Checks of the norm table (Heitz's layout): its closed forms or an
+    // independent rule.
+    std::vector<ClosedFormCheck> norm_checks;
 };
-std::vector<TableDefinition> hdrp_ltc_layer(const HdrpLtcLayer& layer);
+// HDRP's layer: the matrix table hdrp_ltc_<name> in HDRP's packing and its
+// per-texel error table hdrp_ltc_<name>_error, in the hdrp_ltc preset.
+std::vector<TableDefinition> hdrp_ltc_layer(const LtcLayer& layer);
+// Heitz's layer (ltc_1's packing, as three.js, EEVEE and Godot load it): the
+// matrix table ltc_<name>, its norm ltc_<name>_norm (n0: the lobe's albedo)
+// and its error table ltc_<name>_error, in the ltc preset.
+std::vector<TableDefinition> heitz_ltc_layer(const LtcLayer& layer);
 
 // The lobe that the catalogue's LTC table `def` fits at the texel
 // (roughness coordinate, cos_theta), with the table's options (missing ones

@@ -344,7 +344,7 @@ const char* kHdrpCharlieSource =
     "Generated/LtcData.BRDF_Charlie.cs), LTCAreaLight.hlsl (the packing)";
 
 std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
-    HdrpLtcLayer layer;
+    LtcLayer layer;
     layer.name = "charlie";
     layer.matrix_description =
         "HDRP LTC Charlie matrix (Estevez-Kulla shadowing): the inverse divided by its m22 (alpha >= 0.002)";
@@ -366,6 +366,48 @@ std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
                        std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
     };
     return hdrp_ltc_layer(layer);
+}
+
+// The same lobe in Heitz's layout (as ltc_sheen_charlie, the Neubelt
+// variant: alpha = max(r^2, 0.01)), with its norm held to the half-vector
+// rule.
+constexpr double kHeitzLtcMinAlpha = 0.01;
+
+std::vector<TableDefinition> heitz_charlie_ltc_layer() {
+    LtcLayer layer;
+    layer.name = "sheen_charlie_ek";
+    layer.matrix_description =
+        "LTC of the Charlie sheen with the Estevez-Kulla shadowing in ltc_1's layout (alpha >= 0.01)";
+    layer.norm_description = "Norm n0 of the Charlie sheen with the Estevez-Kulla shadowing on ltc_sheen_charlie_ek's grid";
+    layer.error_description =
+        "Per-texel error of the Charlie (Estevez-Kulla) LTC fit in Heitz's layout (the texels of ltc_sheen_charlie_ek)";
+    layer.roughness_meaning = "perceptual roughness r; Charlie alpha = max(r^2, 0.01)";
+    layer.model = [](const std::map<std::string, std::string>&) {
+        nlohmann::json m = charlie_model(SheenShadowing::estevez_kulla);
+        m["brdf"] = "Charlie sheen with the Estevez-Kulla shadowing, no Fresnel, fitted by a linearly transformed "
+                    "cosine";
+        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.01)";
+        return m;
+    };
+    layer.engine_source = "selfshadow/ltc_code fit/fitLTC.cpp (packTab, ltc_1's grid); the lobe of HDRP's "
+                          "BRDF_Charlie and glTF's KHR_materials_sheen";
+    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
+    const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
+    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
+        const double alpha = std::max(alpha_from_perceptual(r), kHeitzLtcMinAlpha);
+        return LtcLobe(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla),
+                       std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
+    };
+    layer.norm_checks = {
+        {"n0 vs a nested Gauss-Kronrod rule over the half vector", kCheckTolerance, [](const TexelEvaluator& e) {
+             const std::vector<std::array<double, 2>> pts = {{0.2, 0.3}, {0.55, 0.75}, {0.9, 0.05}, {1.0, 1.0}};
+             return tables::worst_over(e, pts, 0, [](const auto& p) {
+                 return tables::charlie_moments_by_half_vector(
+                     std::max(p[1], kMinMu), std::max(alpha_from_perceptual(p[0]), kHeitzLtcMinAlpha),
+                     SheenShadowing::estevez_kulla)[0];
+             });
+         }}};
+    return heitz_ltc_layer(layer);
 }
 
 }  // namespace
@@ -403,6 +445,7 @@ void register_sheen_charlie_family(FamilyEntries& family) {
                        {"E: integral of (1 - alpha/2)/pi cos(theta_i) dw_i"}));
     out.back().checks = {fabric_check()};
     for (TableDefinition& d : hdrp_charlie_ltc_layer()) out.push_back(std::move(d));
+    for (TableDefinition& d : heitz_charlie_ltc_layer()) out.push_back(std::move(d));
 }
 
 }  // namespace brdflut
