@@ -277,6 +277,23 @@ TEST(SeparableSssTables, MisdescribedTapAxesAndBadOptionsAreRefusedByName) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("--radius 0"), std::string::npos) << e.what();
     }
+    s = default_settings(def);
+    s.params["spacing"] = "5";
+    try {
+        def.prepare(s);
+        ADD_FAILURE() << "spacing 5 was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("allowed: 0.25 to 4"), std::string::npos) << e.what();
+    }
+    const TableDefinition& transmission = find_table("unreal_sss_transmission");
+    TableSettings t = default_settings(transmission);
+    t.params["extinction-scale"] = "-1";
+    try {
+        transmission.prepare(t);
+        ADD_FAILURE() << "extinction scale -1 was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("allowed: 0 to 100"), std::string::npos) << e.what();
+    }
     const TableDefinition& unreal = find_table("unreal_sss_kernel");
     TableSettings u = default_settings(unreal);
     u.params["falloff"] = "1,0.001,0.3";
