@@ -76,19 +76,44 @@ const std::vector<WarpDef> kWarps = {
          return {};
      },
      "-log(max(1.0 - (v - lo) / (hi - lo) * 0.9996645373720975, 1e-30)) / 8.0"},
+    {Warp::ior_split, "ior_split",
+     "u < 1/2: 1/(1 + (1 - 2u)(1/min - 1)), else 1 + (2u - 1)(max - 1) (1/n linear below n = 1, n above)",
+     "index of refraction from both sides of the interface: n < 1 is light leaving the denser medium "
+     "(Adobe's OpenPBR energy tables, with placement split_endpoints)",
+     [](double u, double lo, double hi) {
+         return u < 0.5 ? 1.0 / (1.0 + (1.0 - 2.0 * u) * (1.0 / lo - 1.0)) : 1.0 + (2.0 * u - 1.0) * (hi - 1.0);
+     },
+     [](double v, double lo, double hi) {
+         return v < 1.0 ? 0.5 - 0.5 * (1.0 / v - 1.0) / (1.0 / lo - 1.0) : 0.5 + 0.5 * (v - 1.0) / (hi - 1.0);
+     },
+     [](double lo, double hi) -> std::string {
+         if (std::string why = finite_range(lo, hi); !why.empty()) return why;
+         if (!(lo > 0.0) || !(lo < 1.0) || !(hi > 1.0))
+             return "warp 'ior_split' needs 0 < min < 1 < max (got " + number(lo) + ":" + number(hi) + ")";
+         return {};
+     },
+     "(v < 1.0 ? 0.5 - 0.5 * (1.0 / v - 1.0) / (1.0 / lo - 1.0) : 0.5 + 0.5 * (v - 1.0) / (hi - 1.0))"},
 };
 
 }  // namespace
 
 std::string_view to_string(Placement p) {
-    return p == Placement::center ? "center" : p == Placement::endpoints ? "endpoints" : "zero_then_endpoints";
+    switch (p) {
+        case Placement::center: return "center";
+        case Placement::endpoints: return "endpoints";
+        case Placement::zero_then_endpoints: return "zero_then_endpoints";
+        case Placement::split_endpoints: return "split_endpoints";
+    }
+    return "center";
 }
 
 Placement placement_from_string(std::string_view s) {
     if (s == "center") return Placement::center;
     if (s == "endpoints") return Placement::endpoints;
     if (s == "zero_then_endpoints") return Placement::zero_then_endpoints;
-    throw Error("placement '" + std::string(s) + "' is not known; allowed: center, endpoints, zero_then_endpoints");
+    if (s == "split_endpoints") return Placement::split_endpoints;
+    throw Error("placement '" + std::string(s) +
+                "' is not known; allowed: center, endpoints, zero_then_endpoints, split_endpoints");
 }
 
 const std::vector<WarpDef>& warps() { return kWarps; }
@@ -117,6 +142,11 @@ double Axis::u(int i) const {
         if (j == 0) return warp_def(warp).u_of_value(0.0, min, max);
         return count > 2 ? (j - 1 + shift) / (count - 2) : 0.0;  // count 2: 0 and min
     }
+    if (placement == Placement::split_endpoints) {  // validate(): count >= 2, no shift
+        const int lo = count / 2, hi = count - lo;    // a half of one texel holds its outer end
+        if (j < lo) return lo > 1 ? 0.5 * j / (lo - 1) : 0.0;
+        return hi > 1 ? 0.5 + 0.5 * (j - lo) / (hi - 1) : 1.0;
+    }
     return count > 1 ? (j + shift) / (count - 1) : 0.0;
 }
 
@@ -142,9 +172,11 @@ double Axis::position_of_value(double v) const {
         p = clamped(v) / min;  // linear between the parameter 0 (texel 0) and min (texel 1)
     } else {
         const double t = u_of_value(v);
-        p = placement == Placement::center      ? t * count - 0.5 - shift
-            : placement == Placement::endpoints ? t * (count - 1) - shift
-                                                : 1.0 + t * (count - 2) - shift;
+        const int lo = count / 2, hi = count - lo;
+        p = placement == Placement::center            ? t * count - 0.5 - shift
+            : placement == Placement::endpoints       ? t * (count - 1) - shift
+            : placement == Placement::split_endpoints ? (t < 0.5 ? 2.0 * t * (lo - 1) : lo + (2.0 * t - 1.0) * (hi - 1))
+                                                      : 1.0 + t * (count - 2) - shift;
     }
     return flip ? count - 1 - p : p;
 }
@@ -170,6 +202,11 @@ void Axis::validate() const {
             fail("placement 'zero_then_endpoints' needs a count of at least 2 (got " + std::to_string(count) + ")");
         if (!(min > 0.0) || !(max > min))
             fail("placement 'zero_then_endpoints' needs 0 < min < max (got " + number(min) + ":" + number(max) + ")");
+    }
+    if (placement == Placement::split_endpoints) {
+        if (count < 2)
+            fail("placement 'split_endpoints' needs a count of at least 2 (got " + std::to_string(count) + ")");
+        if (shift != 0.0) fail("placement 'split_endpoints' takes no shift (got " + number(shift) + ")");
     }
     if (const std::string why = warp_def(warp).range_problem(min, max); !why.empty()) fail(why);
     if (std::isnan(clamp_lo) || std::isnan(clamp_hi) || !(clamp_lo <= clamp_hi))

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "brdflut/axis.h"
 #include "brdflut/catalogue.h"
@@ -39,8 +41,16 @@ TEST(Warps, EveryEntryHasANameAFormulaAShaderInverseAndInvertsItsValue) {
         EXPECT_EQ(warp_from_string(w.name), w.warp);
         EXPECT_NE(std::string(w.formula), "");
         EXPECT_NE(std::string(w.shader_u), "");
-        // A range valid for every warp, both ways round.
-        for (const auto& [lo, hi] : {std::pair{1.5, 2.5}, std::pair{2.5, 1.5}}) {
+        // A range valid for every warp, both ways round; ior_split maps both
+        // sides of n = 1, so its range must contain 1 (increasing only).
+        const bool split = w.warp == Warp::ior_split;
+        if (split) {
+            EXPECT_NE(w.range_problem(1.5, 2.5), "");
+        }
+        const std::vector<std::pair<double, double>> ranges =
+            split ? std::vector<std::pair<double, double>>{{0.4, 2.5}, {0.25, 1.5}}
+                  : std::vector<std::pair<double, double>>{{1.5, 2.5}, {2.5, 1.5}};
+        for (const auto& [lo, hi] : ranges) {
             ASSERT_EQ(w.range_problem(lo, hi), "") << w.name;
             for (double u = 0.0; u <= 1.0; u += 0.125) {
                 const double v = w.value(u, lo, hi);
@@ -82,6 +92,60 @@ TEST(Axis, IorZIsCyclesIndexOfRefractionAxisWithItsClamp) {
     }
     EXPECT_NEAR(a.highest(), 99.50251256, 1e-6);
     EXPECT_NEAR(a.position_of_value(n_of(0.5)), 7.5, 1e-9);
+}
+
+TEST(Axis, SplitEndpointsWithIorSplitIsAdobesOpenPbrIndexAxis) {
+    // Adobe's exact index of n (openpbr_ior_to_exact_index, table size N =
+    // 32): below 1, 15 - 15 (1/n - 1)/1.5; from 1, 16 + 15 (n - 1)/1.5.
+    auto adobe_index = [](double n) { return n < 1.0 ? 15.0 - 15.0 * (1.0 / n - 1.0) / 1.5 : 16.0 + 15.0 * (n - 1.0) / 1.5; };
+    const Axis a{"ior", 0.4, 2.5, 32, Placement::split_endpoints, Warp::ior_split};
+    a.validate();
+    for (int i = 0; i < 32; ++i) {
+        const double n = i < 16 ? 1.0 / (1.0 + 1.5 * (15 - i) / 15.0) : 1.0 + 1.5 * (i - 16) / 15.0;
+        EXPECT_NEAR(a.value(i), n, 1e-15) << i;
+        EXPECT_NEAR(a.position_of_value(n), i == 15 ? 16.0 : i, 1e-12) << i;  // n = 1 reads the upper half
+    }
+    for (double n : {0.4, 0.45, 0.8, 0.999, 1.0, 1.001, 1.7, 2.5})
+        EXPECT_NEAR(a.position_of_value(n), adobe_index(n), 1e-12) << n;
+    EXPECT_EQ(a.lowest(), 0.4);
+    EXPECT_EQ(a.highest(), 2.5);
+    EXPECT_EQ(placement_from_string("split_endpoints"), Placement::split_endpoints);
+    EXPECT_EQ(to_string(Placement::split_endpoints), "split_endpoints");
+
+    // Odd counts give the upper half the extra texel; a half of one texel
+    // holds its outer end. The placement needs a count of at least 2, no
+    // shift, and the warp a range around 1; the errors name the value and
+    // what is allowed.
+    auto problem = [](Axis b) {
+        try {
+            b.validate();
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    Axis odd = a;
+    odd.count = 5;  // 0.4, 1 | 1, 1.75, 2.5
+    odd.validate();
+    EXPECT_NEAR(odd.value(0), 0.4, 1e-15);
+    EXPECT_NEAR(odd.value(1), 1.0, 1e-15);
+    EXPECT_NEAR(odd.value(2), 1.0, 1e-15);
+    EXPECT_NEAR(odd.value(3), 1.75, 1e-15);
+    EXPECT_NEAR(odd.position_of_value(1.375), 2.5, 1e-12);
+    Axis two = a;
+    two.count = 2;  // the two ends
+    two.validate();
+    EXPECT_EQ(two.value(0), 0.4);
+    EXPECT_EQ(two.value(1), 2.5);
+    Axis one = a;
+    one.count = 1;
+    EXPECT_NE(problem(one).find("needs a count of at least 2 (got 1)"), std::string::npos) << problem(one);
+    Axis shifted = a;
+    shifted.shift = 1.0;
+    EXPECT_NE(problem(shifted).find("takes no shift"), std::string::npos);
+    Axis above = a;
+    above.min = 1.5;
+    EXPECT_NE(problem(above).find("needs 0 < min < 1 < max (got 1.5:2.5)"), std::string::npos) << problem(above);
 }
 
 TEST(Axis, FlipReversesTheStoragePositionsAndClampsHoldTheParameter) {

@@ -220,6 +220,28 @@ TEST(Encoding, DdsAndKtx2NameTheUnormFormats) {
     }
 }
 
+// A value that is an end of the range up to the rounding of a computed
+// value is stored as that end.
+TEST(Encoding, ValuesWithinRoundingOfAnEndAreStoredAsThatEnd) {
+    TempDir dir;
+    for (const Storage s : kIntegers) {
+        const double top = s == Storage::rgbd ? 255.0 : 1.0;
+        Table t = make_table(2, top);
+        t.values[5] = -2.220446049250313e-16;
+        t.values[6] = top * (1.0 + 4e-16);
+        const Format f = formats_holding(s).front();
+        const std::string path = dir / ("end." + file_extension(f));
+        write_table(path, t, s, f);
+        ReadOptions o;
+        if (f == Format::dds && s == Storage::rgbd) o.decode = Decode::rgbd;
+        const ExrImage back = read_table_image(path, o);
+        // Values 5 and 6 are texel 2's channel 1 and texel 3's channel 0.
+        const std::size_t stored = back.channel_names.size();
+        EXPECT_EQ(back.pixels.at(2 * stored + 1), 0.0) << to_string(s);
+        EXPECT_NEAR(back.pixels.at(3 * stored), top, 1e-12 * top) << to_string(s);
+    }
+}
+
 // Out-of-range values are refused, never clamped, naming the value, the
 // texel and the allowed range; nothing is written.
 TEST(Encoding, ValuesOutOfRangeAndTooManyChannelsAreRefused) {

@@ -12,6 +12,12 @@
 //                         [min, max], 0 < min < max (count >= 2, count 2 holds
 //                         0 and min; with the log warp, pbrt-v4's radii 0, r_1,
 //                         r_1 q, ..)
+//              split_endpoints  two halves, of h = floor(count/2) and
+//                         g = count - h texels (count >= 2, no shift): end
+//                         points u = j/(h - 1)/2 of [0, 1/2], then u = 1/2 +
+//                         (j - h)/(g - 1)/2 of [1/2, 1]; a half of one texel
+//                         holds its outer end (Adobe's OpenPBR index axis:
+//                         both halves end at u = 1/2, n = 1 with ior_split)
 //   shift      0, or the texels by which a generator misplaced its grid
 //              (Filament's rows hold r = (j + 1.5)/h: shift 1 with a clamp)
 //   warp       value = W(u; min, max), one entry of the warp registry below;
@@ -21,7 +27,8 @@
 // The inverse, used to sample a table at a parameter p:
 //   u = W^-1(clamp(p)), position = u count - 0.5 - shift (center) or
 //   u (count - 1) - shift (endpoints), 1 + u (count - 2) - shift above min and
-//   p / min at or below it (zero_then_endpoints), reversed when flipped; texel i's centre is at position i,
+//   p / min at or below it (zero_then_endpoints), 2u (h - 1) below u = 1/2 and
+//   h + (2u - 1)(g - 1) from it (split_endpoints), reversed when flipped; texel i's centre is at position i,
 //   and the texture coordinate of a GPU sampler is (position + 0.5) / count.
 #pragma once
 
@@ -32,14 +39,14 @@
 
 namespace brdflut {
 
-enum class Placement { center, endpoints, zero_then_endpoints };
+enum class Placement { center, endpoints, zero_then_endpoints, split_endpoints };
 std::string_view to_string(Placement p);
 Placement placement_from_string(std::string_view s);  // throws brdflut::Error
 
 // How the normalized coordinate u in [0, 1] maps to a parameter value. Each
 // warp is one entry of warps(): to add a mapping, add an enumerator here and
 // its entry in src/axis.cpp.
-enum class Warp { linear, square, sqrt, log, ior_z, saturating_exp };
+enum class Warp { linear, square, sqrt, log, ior_z, saturating_exp, ior_split };
 
 struct WarpDef {
     Warp warp;

@@ -92,7 +92,9 @@ PixelType pixel_type_from_string(std::string_view s);  // throws brdflut::Error
 //                    (v * a / 255)^(1 / 2.2)) in R, G, B and a in A; read as
 //                    v = (q / 255)^2.2 / (a / 255). Tables of 1 to 3
 //                    channels, values in [0, 255].
-// Values outside an encoding's range are refused, never clamped.
+// Values outside an encoding's range are refused, never clamped; a value
+// within 1e-12 (relative, at the top) of an end, the rounding of a computed
+// value such as 1 - E at E = 1, is stored as that end.
 enum class Storage { half, float32, unorm16, unorm8, rgb10a2, rgbd };
 Storage storage_of(PixelType p);
 std::string_view to_string(Storage s);  // "half", "float", "unorm16", "unorm8", "rgb10a2", "rgbd"

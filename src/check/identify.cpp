@@ -114,6 +114,7 @@ std::vector<AxisCandidate> axis_candidates(const AxisSpec& spec, int count, cons
     for (Placement p : {def.placement, def.placement == Placement::center ? Placement::endpoints : Placement::center}) {
         if (p == Placement::endpoints && count < 2) continue;
         if (p == Placement::zero_then_endpoints && count < 2) continue;
+        if (p == Placement::split_endpoints && count < 2) continue;
         for (const WarpDef& wd : warps()) {
             for (bool reversed : {false, true}) {
                 const double lo = reversed ? def.max : def.min, hi = reversed ? def.min : def.max;
@@ -403,6 +404,8 @@ std::string uniform_in(const Axis& a) {
         case Warp::log: return "log " + x;
         case Warp::ior_z: return "z = sqrt((" + x + " - 1)/(" + x + " + 1))";
         case Warp::saturating_exp: return "-ln(1 - (1 - e^-8) " + norm() + ")/8";
+        case Warp::ior_split:
+            return "1/" + x + " below 1 and " + x + " above (" + shortest(a.min) + " to 1 to " + shortest(a.max) + ")";
     }
     return x;
 }
@@ -457,7 +460,11 @@ std::vector<std::string> describe_findings(const LutDescription& d) {
             out.push_back(line);
         }
         if (a.placement != da.placement) {
-            if (a.placement == Placement::endpoints)
+            const auto plain = [](Placement p) { return p == Placement::endpoints || p == Placement::center; };
+            if (!plain(a.placement) || !plain(da.placement))
+                out.push_back(role + " at placement " + std::string(to_string(a.placement)) +
+                              ", where the table's default is " + std::string(to_string(da.placement)));
+            else if (a.placement == Placement::endpoints)
                 out.push_back("cell centres described as end points: half a texel: " + role + " hold " + a.name +
                               " at u = " + j + "/(" + n + " - 1), the table's default at cell centres (" + j + " + 0.5)/" + n);
             else

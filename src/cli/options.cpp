@@ -13,7 +13,7 @@ void add_table_options(CLI::App& app, TableArgs& a, bool methods) {
     app.add_option("--size", a.size, "Grid size: N (every axis) or NxM (x by y)");
     app.add_option("--range", a.ranges, "Axis range AXIS=MIN:MAX, e.g. alpha=0.01:1 (repeatable)");
     app.add_option("--count", a.counts, "Axis count AXIS=N (repeatable)");
-    app.add_option("--placement", a.placements, "Axis placement AXIS=center|endpoints (repeatable)");
+    app.add_option("--placement", a.placements, "Axis placement AXIS=center|endpoints|zero_then_endpoints|split_endpoints (repeatable)");
     std::string warp_names;
     for (const WarpDef& w : warps()) warp_names += (warp_names.empty() ? "" : "|") + std::string(w.name);
     app.add_option("--warp", a.warps, "Axis warp AXIS=" + warp_names + " (repeatable)");

@@ -51,7 +51,8 @@ int axis_pixels(int n) { return n <= kPlotTarget ? n * (kPlotTarget / n) : kPlot
 // value v of the axis lies: cell i covers [i/n, (i+1)/n] with its value at
 // the centre, so for `endpoints` placement u = 0 and 1 are half a cell in.
 double plot_fraction(const Axis& a, double v) {
-    if (a.placement == Placement::zero_then_endpoints) return (a.position_of_value(v) + 0.5) / a.count;
+    if (a.placement == Placement::zero_then_endpoints || a.placement == Placement::split_endpoints)
+        return (a.position_of_value(v) + 0.5) / a.count;
     const double u = a.u_of_value(v);
     if (a.placement == Placement::center) return u;
     return (u * (a.count - 1) + 0.5) / a.count;

@@ -442,6 +442,12 @@ std::string shader_source(const Table& t, Storage storage, ShaderLanguage lang) 
               << ") + 0.5) / " << literal(ax.count)
               << ";  // zero_then_endpoints: position = p / min up to min (texel 0 holds 0),\n"
               << "    // 1 + u (count - 2) - shift above it; (position + 0.5) / count\n";
+        } else if (ax.placement == Placement::split_endpoints) {
+            const int h = ax.count / 2, g = ax.count - h;
+            o << "((" << u << " < 0.5 ? 2.0 * " << u << " * " << literal(h - 1) << " : " << literal(h) << " + (2.0 * " << u
+              << " - 1.0) * " << literal(g - 1) << ") + 0.5) / " << literal(ax.count)
+              << ";  // split_endpoints: position = 2u (h - 1) below u = 1/2,\n"
+              << "    // h + (2u - 1)(g - 1) from it, h = floor(count/2), g = count - h; (position + 0.5) / count\n";
         } else if (ax.placement == Placement::center && ax.shift == 0.0) {
             o << u << ";  // center: position = u count - 0.5, (position + 0.5) / count = u\n";
         } else if (ax.placement == Placement::center) {

@@ -45,6 +45,7 @@ void check_shape(const Table& t) {
 }
 
 void check_storable(const Table& t, Storage s) {
+    constexpr double kEndRounding = 1e-12;
     if (t.channel_count() > max_channels(s))
         throw Error("table '" + t.id + "' has " + std::to_string(t.channel_count()) + " channels; the encoding " +
                     std::string(to_string(s)) + " holds 1 to " + std::to_string(max_channels(s)) +
@@ -55,7 +56,10 @@ void check_storable(const Table& t, Storage s) {
             throw RuntimeError("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
                                " is not finite; nothing was written");
         if (is_integer(s)) {
-            if (v >= storage_min(s) && v <= storage_max(s)) continue;
+            // A value within kEndRounding of an end is that end, rounded
+            // (1 - (E_R + E_T) = -2.2e-16 where E_R + E_T rounds to 1 + 2^-52):
+            // it is stored as the end's code, which is what clamping would give.
+            if (v >= storage_min(s) - kEndRounding && v <= storage_max(s) * (1.0 + kEndRounding)) continue;
             throw Error("table '" + t.id + "': value " + shortest(v) + " at " + describe_value(t, i) +
                         " is outside [0, " + shortest(storage_max(s)) + "]; the encoding " +
                         std::string(to_string(s)) + " holds values in [0, " + shortest(storage_max(s)) +

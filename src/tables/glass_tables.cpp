@@ -67,6 +67,9 @@ AxisSpec ior_axis(int count) {
 }
 
 Estimate<2> glass_average(double alpha, double n, bool inside, Visibility vis, double abs_tol) {
+    // An index below 1 is the other side of the index 1/n: the same eta,
+    // through the shared outside transmission of 1/n.
+    if (alpha > 0.0 && n > 0.0 && n < 1.0) return glass_average(alpha, 1.0 / n, !inside, vis, abs_tol);
     const double eta = inside ? 1.0 / n : n;
     if (!(alpha > 0.0) || !(n >= 1.0)) return ggx_glass_average(alpha, eta, vis, abs_tol);
     static SharedResults<4, Estimate<1>> transmission(1 << 14);

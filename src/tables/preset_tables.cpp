@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "brdflut/cloth_invggx.h"
+#include "brdflut/fresnel.h"
 #include "brdflut/generic_lobe.h"
 #include "brdflut/ggx_lobe.h"
 #include "brdflut/ggx_integrals.h"
@@ -350,6 +351,67 @@ ClosedFormCheck f82_moment_half_vector(int c) {
             }};
 }
 
+// Adobe's OpenPBR complements (separable Smith G), axes (mu, alpha, n),
+// (alpha, n), (mu, alpha) or (alpha). At n = 1 there is no interface: no
+// reflection, and E_T is the straight path masked on both sides.
+ClosedFormCheck adobe_ideal_index_matched() {
+    return {"1 - (E_R + E_T) at n = 1 vs 1 - G2(mu, mu) (1 + Lambda(mu)) (no interface, separable G)",
+            2 * kGlass + 1e-12, [](const TexelEvaluator& e) {
+                std::vector<std::array<double, 3>> pts;
+                for (double alpha : {0.05, 0.3, 1.0})
+                    for (double mu : {0.05, 0.4, 0.9}) pts.push_back({mu, alpha, 1.0});
+                return worst_over(e, pts, 0, [](const auto& p) {
+                    return 1.0 - glass_index_matched_transmission(p[0], p[1], Visibility::separable);
+                });
+            }};
+}
+ClosedFormCheck adobe_ideal_average_index_matched() {
+    return {"1 - E_avg at n = 1 vs 1 - 2 * integral of G2(mu, mu) (1 + Lambda(mu)) mu dmu (separable G)",
+            2 * kGlass + 1e-12, [](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.05, 0.3, 1.0}, {1.0}), 0, [](const auto& p) {
+                    return 1.0 - glass_index_matched_transmission_average(p[0], Visibility::separable);
+                });
+            }};
+}
+// A smooth interface (alpha = 0) reflects the Fresnel reflectance, from
+// outside (n > 1) and from inside (n < 1, total internal reflection included).
+ClosedFormCheck adobe_opaque_smooth() {
+    return {"1 - E_R at alpha = 0 vs 1 - F(mu, n) (exact dielectric Fresnel, both sides)", kGlass + 1e-12,
+            [](const TexelEvaluator& e) {
+                std::vector<std::array<double, 3>> pts;
+                for (double n : {0.4, 0.75, 1.0, 1.5, 2.5})
+                    for (double mu : {0.05, 0.4, 0.9}) pts.push_back({mu, 0.0, n});
+                return worst_over(e, pts, 0, [](const auto& p) { return 1.0 - fresnel_dielectric(p[0], p[2]); });
+            }};
+}
+ClosedFormCheck adobe_opaque_average_smooth() {
+    return {"1 - E_R avg at alpha = 0 vs 1 - F_avg(n) (closed form; for n < 1, (1 - F_avg(1/n)) n^2)",
+            kGlass + 1e-12, [](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.0}, {0.4, 0.75, 1.5, 2.5}), 0, [](const auto& p) {
+                    const double n = p[1];
+                    // Inside, F_avg(1/m) = 1 - (1 - F_avg(m)) / m^2 with m = 1/n.
+                    return n >= 1.0 ? 1.0 - fresnel_dielectric_average_closed_form(n)
+                                    : (1.0 - fresnel_dielectric_average_closed_form(1.0 / n)) * n * n;
+                });
+            }};
+}
+// The metal (F = 1) at alpha = 1, where D = 1/pi and separable G1 = 2 mu/(1 + mu).
+ClosedFormCheck adobe_metal_at_alpha_one() {
+    return {"1 - E at alpha = 1 vs 1 - 2 (1 - ln 2)/(1 + mu) (separable G)", kGgx + 1e-12,
+            [](const TexelEvaluator& e) {
+                return worst_over(e, grid_points({0.05, 0.25, 0.5, 1.0}, {1.0}), 0,
+                                  [](const auto& p) { return 1.0 - ggx_schlick_albedo_alpha_one(p[0]); });
+            }};
+}
+ClosedFormCheck adobe_metal_average_at_alpha_one() {
+    return {"1 - E_avg at alpha = 1 vs 1 - 4 (1 - ln 2)^2 (separable G)", kGgx + 1e-12, [](const TexelEvaluator& e) {
+                return worst_over(e, points_1d({1.0}), 0, [](const auto&) {
+                    const double c = 1.0 - std::log(2.0);
+                    return 1.0 - 4.0 * c * c;
+                });
+            }};
+}
+
 }  // namespace checks
 
 using tables::ChannelRecipe;
@@ -377,6 +439,36 @@ AxisSpec charlie_alpha_linear(int count) {
     return a;
 }
 
+// Adobe's OpenPBR energy tables (openpbr_microfacet_multiple_scattering_data.h):
+// 32 end points per axis; cos_theta = j/31 with the first at 1e-3 (the
+// tables' mu = 0 column is the integral at mu = 1e-3, not at 0), alpha
+// = (j/31)^2, and the index axis split at n = 1: j < 16 holds 1/n = 1 +
+// 1.5 (15 - j)/15 (light leaving a medium of index up to 2.5), j >= 16 holds
+// n = 1 + 1.5 (j - 16)/15.
+AxisSpec adobe_mu(int count) {
+    AxisSpec a = cos_theta(count, Placement::endpoints);
+    a.axis.clamp_lo = 1e-3;
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+AxisSpec adobe_alpha(int count) {
+    AxisSpec a = alpha_sqrt_linear(count);
+    a.meaning = "GGX alpha = r^2, r = j/(count - 1) (openpbr_alpha_to_exact_index: sqrt(alpha) (count - 1))";
+    return a;
+}
+AxisSpec adobe_ior(int count) {
+    AxisSpec a = tables::ior_axis(count);
+    a.axis.min = 1.0 / 2.5;
+    a.axis.max = 2.5;
+    a.axis.placement = Placement::split_endpoints;
+    a.axis.warp = Warp::ior_split;
+    a.domain_min = 0.1;  // the glass model takes any eta > 0; n < 1 is eta = n from the other side
+    a.meaning = "relative index n = eta_t/eta_i from 1/2.5 to 2.5; the first half holds n < 1 (light leaving the "
+                "denser medium) linear in 1/n, the second n >= 1 linear in n, both halves ending at n = 1 "
+                "(openpbr_ior_to_exact_index)";
+    return a;
+}
+
 std::vector<AxisSpec> mu_r(int mus, int rs, Placement placement) {
     return {cos_theta(mus, placement), roughness(rs, placement)};
 }
@@ -399,6 +491,10 @@ const char* kUnrealLegacyClothSource =
     "Engine/Source/Runtime/Renderer/Private/ShadingEnergyConservation.cpp (32x32 G16R16, shipped as "
     "ShadingEnergyConservationData.h ClothSpecValues), read at the public mirror unicorn2022/UE5.8.0 "
     "@5d9a05c15b1f8c6d7b3354b360677ce30d688149";
+const char* kAdobeOpenPbrSource =
+    "adobe/openpbr-bsdf impl/openpbr_microfacet_multiple_scattering_data.h (axes, openpbr_ior_to_exact_index, "
+    "the extrapolation above n = 2.5), impl/data/openpbr_energy_array_access.h (array[ior][alpha][cos_theta], "
+    "UNORM16), impl/data/openpbr_*_energy_complement_data.h @a29da969683ed3e154af7f32f0e981c05161d885";
 const char* kGodotSource =
     "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/integrate_dfg.glsl "
     "@e8387d695efee663e2f427bd427792a6f0c633f0 (PR #103934)";
@@ -722,6 +818,68 @@ std::vector<PresetDeclaration> declare() {
            {},
            cycles_model,
            {checks::one_minus_albedo_at_alpha_one()}}}});
+    {
+        // Adobe's OpenPBR BSDF: the energy its single-scattering GGX lobes
+        // lose, 1 - E, with the separable Smith G (the tables agree with it,
+        // not with the height-correlated G2, to their noise), UNORM16.
+        const auto adobe = [&](std::string id, std::string description, std::vector<AxisSpec> axes,
+                               ChannelRecipe channel, const char* core_model, ClosedFormCheck check) {
+            nlohmann::json model = std::string(core_model) == "glass"
+                                       ? tables::glass_model(Visibility::separable, false)
+                                       : ggx_model(Visibility::separable);
+            if (model.contains("side")) {
+                model.erase("side");
+                model["side"] = "eta = n, the axis value: n < 1 is light leaving the denser medium";
+            }
+            model["fresnel"] = std::string(core_model) == "glass" ? "exact dielectric" : "1";
+            model["lookup"] = "above n = 2.5 (or below 1/2.5) Adobe scales the opaque tables' value by "
+                              "1 - (F0(n) - F0(2.5))/(1 - F0(2.5)), F0 = ((n - 1)/(n + 1))^2";
+            return RecipeTable{std::move(id),
+                               std::move(description),
+                               kAdobeOpenPbrSource,
+                               std::move(axes),
+                               {std::move(channel)},
+                               {{"visibility", "separable"}},
+                               model,
+                               {std::move(check)},
+                               Storage::unorm16};
+        };
+        const auto one_minus = [](std::string meaning, const char* core, int c) {
+            return ChannelRecipe{std::move(meaning), {{core, c, -1.0}}, 1.0};
+        };
+        all.push_back(
+            {{"adobe_openpbr",
+              "Adobe's OpenPBR BSDF energy tables: 1 - E of GGX (separable G) for the ideal (reflection and "
+              "transmission) and opaque (reflection) dielectric over a split index axis and for the metal (F = 1), "
+              "32 end points per axis, UNORM16",
+              PixelType::float32},
+             {adobe("adobe_openpbr_ideal_dielectric_energy_complement",
+                    "OpenPBR ideal dielectric: 1 - (E_R + E_T) over (mu, alpha, n), n split at 1",
+                    {adobe_mu(32), adobe_alpha(32), adobe_ior(32)},
+                    one_minus("1 - (E_R + E_T): the energy the rough interface loses", "ggx_glass_albedo", 2), "glass",
+                    checks::adobe_ideal_index_matched()),
+              adobe("adobe_openpbr_ideal_dielectric_avg_energy_complement",
+                    "OpenPBR ideal dielectric: 1 - E_avg (E_R + E_T averaged over mu) over (alpha, n)",
+                    {adobe_alpha(32), adobe_ior(32)},
+                    one_minus("1 - E_avg: 1 - 2 * integral of (E_R + E_T) mu dmu", "ggx_glass_albedo_avg", 2), "glass",
+                    checks::adobe_ideal_average_index_matched()),
+              adobe("adobe_openpbr_opaque_dielectric_energy_complement",
+                    "OpenPBR opaque dielectric: 1 - E_R over (mu, alpha, n), n split at 1",
+                    {adobe_mu(32), adobe_alpha(32), adobe_ior(32)},
+                    one_minus("1 - E_R: the energy the interface does not reflect", "ggx_glass_albedo", 0), "glass",
+                    checks::adobe_opaque_smooth()),
+              adobe("adobe_openpbr_opaque_dielectric_avg_energy_complement",
+                    "OpenPBR opaque dielectric: 1 - E_R avg over (alpha, n)", {adobe_alpha(32), adobe_ior(32)},
+                    one_minus("1 - E_R avg: 1 - 2 * integral of E_R mu dmu", "ggx_glass_albedo_avg", 0), "glass",
+                    checks::adobe_opaque_average_smooth()),
+              adobe("adobe_openpbr_ideal_metal_energy_complement", "OpenPBR ideal metal: 1 - E (F = 1) over (mu, alpha)",
+                    {adobe_mu(32), adobe_alpha(32)},
+                    one_minus("1 - E: 1 - integral of f cos(theta_i) dw_i with F = 1", "ggx_albedo", 0), "ggx",
+                    checks::adobe_metal_at_alpha_one()),
+              adobe("adobe_openpbr_ideal_metal_avg_energy_complement", "OpenPBR ideal metal: 1 - E_avg (F = 1) over alpha",
+                    {adobe_alpha(32)}, one_minus("1 - E_avg: 1 - 2 * integral of E(mu) mu dmu", "ggx_albedo_avg", 0),
+                    "ggx", checks::adobe_metal_average_at_alpha_one())}});
+    }
     all.push_back(
         {{"babylon",
           "Babylon.js's environmentBRDFTexture: 256x256, R = B term, G = A + B, B = Charlie sheen; RGBD-encoded "

@@ -496,6 +496,7 @@ const std::vector<Config>& configs() {
         {"transposed and flipped", "ggx_dfg --size 20x12 --order alpha,cos_theta --flip alpha"},
         {"clamps", "ggx_albedo --size 16x12 --clamp cos_theta=0.15:0.85 --clamp alpha=0.2:1 --pixel half"},
         {"ior_z warp", "fresnel_dielectric --size 16x24 --range eta=1.05:3 --warp eta=ior_z"},
+        {"split index axis", "adobe_openpbr_opaque_dielectric_avg_energy_complement --size 24x16 --pixel float"},
         {"channel map", "ggx_dfg --size 16 --channels R=R+G,G=G"},
         {"shifted grids", "ggx_dfg --size 16x12 --shift alpha=1 --clamp alpha=0:1 --placement cos_theta=endpoints "
                           "--shift cos_theta=-0.5 --clamp cos_theta=0:1"},
