@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <tuple>
 
@@ -597,6 +598,19 @@ std::vector<Variant> tabulate_variants(int ndim, int threads) {
     return variants;
 }
 
+// The coarse tabulation of the tables of `ndim` axes, made once per process
+// and shared by every later identify call: draft quadrature on fixed dense
+// grids, each variant on one thread, so its values do not depend on the
+// thread count or on the file. At most two entries (1 and 2 axes).
+const std::vector<Variant>& tabulated_variants(int ndim, int threads) {
+    static std::mutex m;
+    static std::map<int, std::vector<Variant>> cache;  // std::map: references stay valid
+    const std::lock_guard<std::mutex> lock(m);
+    auto it = cache.find(ndim);
+    if (it == cache.end()) it = cache.emplace(ndim, tabulate_variants(ndim, threads)).first;
+    return it->second;
+}
+
 IdentifyReport identify_shape(const ExrImage& img, const IdentifyOptions& opt, const std::vector<Variant>& variants) {
     const int ndim = img.height == 1 ? 1 : 2;
     const int nf = static_cast<int>(img.channel_names.size());
@@ -945,16 +959,16 @@ IdentifyReport identify(const ExrImage& img, const IdentifyOptions& opt) {
         throw Error("--threads " + std::to_string(opt.threads) + " is out of range; allowed: 0 (all) or more");
     const std::vector<std::pair<int, int>> shapes = is_flat(img) ? factorizations(img.width) : std::vector<std::pair<int, int>>{};
     const int ndim = img.height == 1 ? 1 : 2;
-    std::vector<Variant> variants;
+    const std::vector<Variant>* variants = nullptr;
     try {
-        variants = tabulate_variants(ndim, opt.threads);
+        variants = &tabulated_variants(ndim, opt.threads);
     } catch (const RuntimeError&) {
         if (shapes.empty()) throw;
     }
-    IdentifyReport report = variants.empty() ? IdentifyReport{} : identify_shape(img, opt, variants);
+    IdentifyReport report = variants == nullptr ? IdentifyReport{} : identify_shape(img, opt, *variants);
     if (shapes.empty()) return report;
     // A flat array: also each factorization of its length as a 2-D table.
-    const std::vector<Variant> variants2 = tabulate_variants(2, opt.threads);
+    const std::vector<Variant>& variants2 = tabulated_variants(2, opt.threads);
     for (const auto& [w, h] : shapes) {
         ExrImage shaped = img;
         shaped.width = w;
