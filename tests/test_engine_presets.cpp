@@ -20,6 +20,7 @@
 #include "brdflut/generate.h"
 #include "brdflut/generic_lobe.h"
 #include "brdflut/ggx_integrals.h"
+#include "brdflut/glass_integrals.h"
 #include "brdflut/microfacet.h"
 #include "brdflut/random.h"
 #include "brdflut/sheen_integrals.h"
@@ -221,6 +222,30 @@ TEST(EnginePresets, OslBsdlStoresOneMinusTheAlbedoOnItsQuadraticGrid) {
         const double alpha = std::max(std::pow(r / 15.0, 2), 1e-5);
         const Estimate<2> s = ggx_split_sum(mu, alpha, Visibility::height_correlated);
         EXPECT_NEAR(t.at(at2(c, r, 16), 0), 1.0 - (s.value[0] + s.value[1]), 2e-7) << c << "," << r;
+    }
+}
+
+// BSDL's DielectricFront and Back (genluts.cpp, data[f][r][c]): 1 - (E_R +
+// E_T) at cos = max(c/15, 1e-6), alpha = max((r/15)^2, 1e-5) and eta = n or
+// 1/n, n = 1.001 + 3.999 (f/31)^2.
+TEST(EnginePresets, OslBsdlDielectricTablesHoldOneMinusTheGlassEnergyOnBsdlsGrid) {
+    for (const bool back : {false, true}) {
+        const std::string id = back ? "osl_bsdl_dielectric_back" : "osl_bsdl_dielectric_front";
+        const TableDefinition& def = find_table(id);
+        ASSERT_EQ(def.axes.size(), 3u);
+        EXPECT_EQ(def.axes[0].axis.count, 16);
+        EXPECT_EQ(def.axes[1].axis.count, 16);
+        EXPECT_EQ(def.axes[2].axis.count, 32);
+        const Table t = generate(def, default_settings(def));
+        for (const auto& [c, r, f] :
+             std::vector<std::array<int, 3>>{{0, 0, 0}, {15, 15, 31}, {0, 15, 31}, {7, 3, 12}, {1, 9, 5}, {11, 1, 30}}) {
+            const double mu = std::max(c / 15.0, 1e-6);
+            const double alpha = std::max(std::pow(r / 15.0, 2), 1e-5);
+            const double n = 1.001 + 3.999 * std::pow(f / 31.0, 2);
+            const Estimate<2> e = ggx_glass(mu, alpha, back ? 1.0 / n : n, Visibility::height_correlated);
+            const std::size_t texel = static_cast<std::size_t>((f * 16 + r) * 16 + c);
+            EXPECT_NEAR(t.at(texel, 0), 1.0 - (e.value[0] + e.value[1]), 2e-7) << id << " " << c << "," << r << "," << f;
+        }
     }
 }
 

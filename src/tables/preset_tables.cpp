@@ -80,6 +80,25 @@ AxisSpec bsdl_roughness(int count) {
     return a;
 }
 
+// BSDL's dielectric tables (SPI/bsdf_dielectric_decl.h, genluts.cpp): cos =
+// max(i/15, 1e-6), linear; the index eta = 1.001 + 3.999 t^2 over t = f/31.
+AxisSpec bsdl_linear_cos(int count) {
+    AxisSpec a = cos_theta(count, Placement::endpoints);
+    a.axis.clamp_lo = 1e-6;
+    a.axis.clamp_hi = 1.0;
+    return a;
+}
+AxisSpec bsdl_ior(int count) {
+    AxisSpec a = tables::ior_axis(count);
+    a.axis.min = 1.001;
+    a.axis.max = 5.0;
+    a.axis.placement = Placement::endpoints;
+    a.axis.warp = Warp::square;
+    a.meaning = "index n = 1.001 + 3.999 t^2 at end points t (DielectricFresnel::from_table_index); the front "
+                "table holds eta = n, the back eta = 1/n";
+    return a;
+}
+
 // GGX alpha itself, linear, cell centres (MaterialX's albedo table rows).
 AxisSpec alpha_linear(int count) {
     AxisSpec a = tables::alpha_axis(count);
@@ -351,17 +370,20 @@ ClosedFormCheck f82_moment_half_vector(int c) {
             }};
 }
 
-// Adobe's OpenPBR complements (separable Smith G), axes (mu, alpha, n),
-// (alpha, n), (mu, alpha) or (alpha). At n = 1 there is no interface: no
-// reflection, and E_T is the straight path masked on both sides.
-ClosedFormCheck adobe_ideal_index_matched() {
-    return {"1 - (E_R + E_T) at n = 1 vs 1 - G2(mu, mu) (1 + Lambda(mu)) (no interface, separable G)",
-            2 * kGlass + 1e-12, [](const TexelEvaluator& e) {
+// 1 - (E_R + E_T) of a table with axes (mu, alpha, n), or (mu, r, n) with
+// alpha = r^2 when `roughness_axis`, at n = 1: there is no interface, no
+// reflection, and E_T is the straight path masked on both sides (Adobe's
+// OpenPBR tables with the separable G, BSDL's with the height-correlated G2).
+ClosedFormCheck glass_complement_index_matched(Visibility vis, bool roughness_axis) {
+    return {"1 - (E_R + E_T) at n = 1 vs 1 - G2(mu, mu) (1 + Lambda(mu)) (no interface, " + std::string(to_string(vis)) +
+                " G)",
+            2 * kGlass + 1e-12, [vis, roughness_axis](const TexelEvaluator& e) {
                 std::vector<std::array<double, 3>> pts;
                 for (double alpha : {0.05, 0.3, 1.0})
-                    for (double mu : {0.05, 0.4, 0.9}) pts.push_back({mu, alpha, 1.0});
-                return worst_over(e, pts, 0, [](const auto& p) {
-                    return 1.0 - glass_index_matched_transmission(p[0], p[1], Visibility::separable);
+                    for (double mu : {0.05, 0.4, 0.9}) pts.push_back({mu, roughness_axis ? std::sqrt(alpha) : alpha, 1.0});
+                return worst_over(e, pts, 0, [vis, roughness_axis](const auto& p) {
+                    const double alpha = roughness_axis ? p[1] * p[1] : p[1];
+                    return 1.0 - glass_index_matched_transmission(p[0], alpha, vis);
                 });
             }};
 }
@@ -495,6 +517,11 @@ const char* kAdobeOpenPbrSource =
     "adobe/openpbr-bsdf impl/openpbr_microfacet_multiple_scattering_data.h (axes, openpbr_ior_to_exact_index, "
     "the extrapolation above n = 2.5), impl/data/openpbr_energy_array_access.h (array[ior][alpha][cos_theta], "
     "UNORM16), impl/data/openpbr_*_energy_complement_data.h @a29da969683ed3e154af7f32f0e981c05161d885";
+const char* kBsdlDielectricSource =
+    "AcademySoftwareFoundation/OpenShadingLanguage src/libbsdl/include/BSDL/SPI/bsdf_dielectric_decl.h "
+    "(Nc = Nr = 16, Nf = 32, get_cosine) and bsdf_dielectric_impl.h @b3ba1c8e645895da23ed1a6eeca1b241e5bae4ad "
+    "(DielectricFresnel::from_table_index, eval: G2_G1 weights, energy), src/libbsdl/src/genluts.cpp "
+    "(data[f][r][c] = 1 - E, 128^2 samples), microfacet_tools_impl.h (GGXDist: height-correlated G2)";
 const char* kGodotSource =
     "godotengine/godot servers/rendering/renderer_rd/shaders/forward_clustered/integrate_dfg.glsl "
     "@e8387d695efee663e2f427bd427792a6f0c633f0 (PR #103934)";
@@ -532,6 +559,10 @@ std::vector<PresetDeclaration> declare() {
     unreal_glass_model.erase("side");
     unreal_glass_model["side"] = "R: eta = n (outside in); G: eta = 1/n (inside out)";
     unreal_glass_model["roughness"] = "alpha = max(r, 0.01)^2";
+    nlohmann::json bsdl_glass_model = tables::glass_model(Visibility::height_correlated, false);
+    bsdl_glass_model.erase("side");
+    bsdl_glass_model["side"] = "front: eta = n; back: eta = 1/n";
+    bsdl_glass_model["roughness"] = "alpha = max(r^2, 1e-5)";
     nlohmann::json glass_model = tables::glass_model(Visibility::height_correlated, false);
     glass_model.erase("side");
     glass_model["side"] = "ggx_glass_E: eta = n; ggx_glass_inv_E: eta = 1/n";
@@ -807,7 +838,8 @@ std::vector<PresetDeclaration> declare() {
            {checks::split_at_one(0, 1, false), checks::charlie_normal_alpha(2)}}}});
     all.push_back(
         {{"osl_bsdl",
-          "OSL BSDL's MiniMicrofacetGGX energy table: 16x16, 1 - E of GGX, cos = (i/15)^2, alpha = (j/15)^2",
+          "OSL BSDL's energy tables: MiniMicrofacetGGX (16x16, 1 - E of GGX, cos = (i/15)^2, alpha = (j/15)^2) and "
+          "DielectricFront and Back (16x16x32, 1 - (E_R + E_T) of rough glass, cos = i/15)",
           PixelType::float32},
          {{"osl_bsdl_ggx", "BSDL spi::MiniMicrofacetGGX: 1 - E (height-correlated GGX, F = 1)",
            "AcademySoftwareFoundation/OpenShadingLanguage @ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa "
@@ -817,7 +849,25 @@ std::vector<PresetDeclaration> declare() {
            {{"1 - E: the energy GGX loses, 1 - integral of f cos(theta_i) dw_i", {{"ggx_albedo", 0, -1.0}}, 1.0}},
            {},
            cycles_model,
-           {checks::one_minus_albedo_at_alpha_one()}}}});
+           {checks::one_minus_albedo_at_alpha_one()}},
+          {"osl_bsdl_dielectric_front",
+           "BSDL spi::DielectricFront: 1 - (E_R + E_T) of rough glass from outside (eta = n), 16x16x32",
+           kBsdlDielectricSource,
+           {bsdl_linear_cos(16), bsdl_roughness(16), bsdl_ior(32)},
+           {{"1 - (E_R + E_T): the energy the rough interface loses, eta = n", {{"ggx_glass_albedo", 2, -1.0}}, 1.0}},
+           {},
+           bsdl_glass_model,
+           {checks::glass_complement_index_matched(Visibility::height_correlated, true)}},
+          {"osl_bsdl_dielectric_back",
+           "BSDL spi::DielectricBack: 1 - (E_R + E_T) of rough glass from inside (eta = 1/n), 16x16x32",
+           kBsdlDielectricSource,
+           {bsdl_linear_cos(16), bsdl_roughness(16), bsdl_ior(32)},
+           {{"1 - (E_R + E_T): the energy the rough interface loses, eta = 1/n",
+             {{"ggx_glass_albedo_inside", 2, -1.0}},
+             1.0}},
+           {},
+           bsdl_glass_model,
+           {checks::glass_complement_index_matched(Visibility::height_correlated, true)}}}});
     {
         // Adobe's OpenPBR BSDF: the energy its single-scattering GGX lobes
         // lose, 1 - E, with the separable Smith G (the tables agree with it,
@@ -857,7 +907,7 @@ std::vector<PresetDeclaration> declare() {
                     "OpenPBR ideal dielectric: 1 - (E_R + E_T) over (mu, alpha, n), n split at 1",
                     {adobe_mu(32), adobe_alpha(32), adobe_ior(32)},
                     one_minus("1 - (E_R + E_T): the energy the rough interface loses", "ggx_glass_albedo", 2), "glass",
-                    checks::adobe_ideal_index_matched()),
+                    checks::glass_complement_index_matched(Visibility::separable, false)),
               adobe("adobe_openpbr_ideal_dielectric_avg_energy_complement",
                     "OpenPBR ideal dielectric: 1 - E_avg (E_R + E_T averaged over mu) over (alpha, n)",
                     {adobe_alpha(32), adobe_ior(32)},
