@@ -82,12 +82,7 @@ AxisSpec bsdl_roughness(int count) {
 
 // BSDL's dielectric tables (SPI/bsdf_dielectric_decl.h, genluts.cpp): cos =
 // max(i/15, 1e-6), linear; the index eta = 1.001 + 3.999 t^2 over t = f/31.
-AxisSpec bsdl_linear_cos(int count) {
-    AxisSpec a = cos_theta(count, Placement::endpoints);
-    a.axis.clamp_lo = 1e-6;
-    a.axis.clamp_hi = 1.0;
-    return a;
-}
+AxisSpec bsdl_linear_cos(int count) { return clamped_low(cos_theta(count, Placement::endpoints), 1e-6); }
 AxisSpec bsdl_ior(int count) {
     AxisSpec a = tables::ior_axis(count);
     a.axis.min = 1.001;
@@ -116,12 +111,7 @@ AxisSpec cycles_rough(int count) {
     a.axis.clamp_hi = 1.0;
     return a;
 }
-AxisSpec cycles_mu(int count) {
-    AxisSpec a = cos_theta(count, Placement::endpoints);
-    a.axis.clamp_lo = 1e-4;
-    a.axis.clamp_hi = 1.0;
-    return a;
-}
+AxisSpec cycles_mu(int count) { return clamped_low(cos_theta(count, Placement::endpoints), 1e-4); }
 double ior_of_z(double z) { return (1.0 + z * z) / (1.0 - z * z); }
 AxisSpec cycles_ior(int count) {
     AxisSpec a = tables::ior_axis(count);
@@ -467,12 +457,7 @@ AxisSpec charlie_alpha_linear(int count) {
 // = (j/31)^2, and the index axis split at n = 1: j < 16 holds 1/n = 1 +
 // 1.5 (15 - j)/15 (light leaving a medium of index up to 2.5), j >= 16 holds
 // n = 1 + 1.5 (j - 16)/15.
-AxisSpec adobe_mu(int count) {
-    AxisSpec a = cos_theta(count, Placement::endpoints);
-    a.axis.clamp_lo = 1e-3;
-    a.axis.clamp_hi = 1.0;
-    return a;
-}
+AxisSpec adobe_mu(int count) { return clamped_low(cos_theta(count, Placement::endpoints), 1e-3); }
 AxisSpec adobe_alpha(int count) {
     AxisSpec a = alpha_sqrt_linear(count);
     a.meaning = "GGX alpha = r^2, r = j/(count - 1) (openpbr_alpha_to_exact_index: sqrt(alpha) (count - 1))";
