@@ -131,7 +131,7 @@ TEST(Quality, IsRecordedAndSetsTheToleranceAndDraftEstimatesAreHonest) {
         ++checked;
         std::map<Quality, Table> t;
         for (Quality q : {Quality::draft, Quality::standard, Quality::reference}) {
-            TableSettings s = small(id, 6);
+            TableSettings s = small(id, 4);
             s.quality = q;
             t.emplace(q, generate(find_table(id), s));
             EXPECT_EQ(t.at(q).method.at("quality"), std::string(to_string(q))) << id;
