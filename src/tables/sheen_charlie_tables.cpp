@@ -343,6 +343,26 @@ const char* kHdrpCharlieSource =
     "BRDF_Charlie.cs @7a50b047ab6b8628a1433ffebc7fe048fc823a46 (the lobe; HDRP's own fit on this grid: "
     "Generated/LtcData.BRDF_Charlie.cs), LTCAreaLight.hlsl (the packing)";
 
+// The Charlie lobe with the Estevez-Kulla shadowing at alpha = max(r^2,
+// min_alpha), its model and its norm rule: what HDRP's and Heitz's layouts
+// of it share.
+void set_charlie_ek_lobe(LtcLayer& layer, double min_alpha, const std::string& roughness) {
+    layer.model = [roughness](const std::map<std::string, std::string>&) {
+        nlohmann::json m = charlie_model(SheenShadowing::estevez_kulla);
+        m["brdf"] = "Charlie sheen with the Estevez-Kulla shadowing, no Fresnel, fitted by a linearly transformed "
+                    "cosine";
+        m["roughness"] = roughness;
+        return m;
+    };
+    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
+    const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
+    layer.lobe = [key, min_alpha](double r, double mu, const std::map<std::string, std::string>&) {
+        const double alpha = std::max(alpha_from_perceptual(r), min_alpha);
+        return LtcLobe(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla),
+                       std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
+    };
+}
+
 std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
     LtcLayer layer;
     layer.name = "charlie";
@@ -350,21 +370,9 @@ std::vector<TableDefinition> hdrp_charlie_ltc_layer() {
         "HDRP LTC Charlie matrix (Estevez-Kulla shadowing): the inverse divided by its m22 (alpha >= 0.002)";
     layer.error_description = "Per-texel error of the Charlie (Estevez-Kulla) LTC fit (the texels of hdrp_ltc_charlie)";
     layer.roughness_meaning = "perceptual roughness r; Charlie alpha = max(r^2, 0.002)";
-    layer.model = [](const std::map<std::string, std::string>&) {
-        nlohmann::json m = charlie_model(SheenShadowing::estevez_kulla);
-        m["brdf"] = "Charlie sheen with the Estevez-Kulla shadowing, no Fresnel, fitted by a linearly transformed "
-                    "cosine";
-        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.002) (the clamp of HDRP's BRDF_Charlie)";
-        return m;
-    };
+    set_charlie_ek_lobe(layer, kHdrpLtcMinAlpha,
+                        "alpha = max(perceptual_roughness^2, 0.002) (the clamp of HDRP's BRDF_Charlie)");
     layer.engine_source = kHdrpCharlieSource;
-    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
-    const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
-    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
-        const double alpha = std::max(alpha_from_perceptual(r), kHdrpLtcMinAlpha);
-        return LtcLobe(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla),
-                       std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
-    };
     return hdrp_ltc_layer(layer);
 }
 
@@ -382,22 +390,9 @@ std::vector<TableDefinition> heitz_charlie_ltc_layer() {
     layer.error_description =
         "Per-texel error of the Charlie (Estevez-Kulla) LTC fit in Heitz's layout (the texels of ltc_sheen_charlie_ek)";
     layer.roughness_meaning = "perceptual roughness r; Charlie alpha = max(r^2, 0.01)";
-    layer.model = [](const std::map<std::string, std::string>&) {
-        nlohmann::json m = charlie_model(SheenShadowing::estevez_kulla);
-        m["brdf"] = "Charlie sheen with the Estevez-Kulla shadowing, no Fresnel, fitted by a linearly transformed "
-                    "cosine";
-        m["roughness"] = "alpha = max(perceptual_roughness^2, 0.01)";
-        return m;
-    };
+    set_charlie_ek_lobe(layer, kHeitzLtcMinAlpha, "alpha = max(perceptual_roughness^2, 0.01)");
     layer.engine_source = "selfshadow/ltc_code fit/fitLTC.cpp (packTab, ltc_1's grid); the lobe of HDRP's "
                           "BRDF_Charlie and glTF's KHR_materials_sheen";
-    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
-    const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
-    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
-        const double alpha = std::max(alpha_from_perceptual(r), kHeitzLtcMinAlpha);
-        return LtcLobe(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla),
-                       std::max(mu, kMinMu), alpha, key, kCharlieTableTolerance);
-    };
     layer.norm_checks = {
         {"n0 vs a nested Gauss-Kronrod rule over the half vector", kCheckTolerance, [](const TexelEvaluator& e) {
              const std::vector<std::array<double, 2>> pts = {{0.2, 0.3}, {0.55, 0.75}, {0.9, 0.05}, {1.0, 1.0}};
