@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -247,6 +248,58 @@ TEST(EnginePresets, OslBsdlDielectricTablesHoldOneMinusTheGlassEnergyOnBsdlsGrid
             EXPECT_NEAR(t.at(texel, 0), 1.0 - (e.value[0] + e.value[1]), 2e-7) << id << " " << c << "," << r << "," << f;
         }
     }
+}
+
+// Mitsuba 3's roughplastic transmittance: 64 end points in mu clamped at
+// 1e-6, E_T of GGX glass (separable G) at the material's alpha and index,
+// which the table holds as pinned core axes (--alpha, --ior). Mitsuba builds
+// it with a 32 x 32 Gauss-Legendre rule over visible normals; that rule
+// departs from the exact integral by about 1e-4 at its default material.
+TEST(EnginePresets, MitsubaRoughPlasticTransmittanceAtOneMaterial) {
+    const TableDefinition& def = find_table("mitsuba3_roughplastic_external_transmittance");
+    ASSERT_EQ(def.axes.size(), 1u);
+    EXPECT_EQ(def.axes[0].axis.count, 64);
+    EXPECT_EQ(def.axes[0].axis.clamped(0.0), 1e-6);
+    const double eta = 1.49 / 1.000277;
+    TableSettings s = default_settings(def);
+    EXPECT_EQ(s.params.at("alpha"), "0.1");
+    EXPECT_EQ(std::stod(s.params.at("ior")), eta);
+    const Table t = generate(def, s);
+    double mitsuba_rule = 0.0;
+    for (int i = 0; i < 64; ++i) {
+        const double mu = std::max(i / 63.0, 1e-6);
+        const double exact = ggx_glass(mu, 0.1, eta, Visibility::separable).value[1];
+        EXPECT_NEAR(t.at(static_cast<std::size_t>(i), 0), exact, 1e-7) << i;
+        mitsuba_rule = std::max(mitsuba_rule, std::abs(ggx_transmission_visible_normal_rule(mu, 0.1, eta, 32) - exact));
+    }
+    EXPECT_GT(mitsuba_rule, 5e-5);
+    EXPECT_LT(mitsuba_rule, 2e-4);
+    EXPECT_EQ(t.model["pinned"]["alpha"], 0.1);
+
+    // Another material.
+    s.params["alpha"] = "0.3";
+    s.params["ior"] = "1.5";
+    const Table u = generate(def, s);
+    for (int i : {0, 20, 63}) {
+        const double mu = std::max(i / 63.0, 1e-6);
+        EXPECT_NEAR(u.at(static_cast<std::size_t>(i), 0), ggx_glass(mu, 0.3, 1.5, Visibility::separable).value[1], 1e-7)
+            << i;
+    }
+    EXPECT_EQ(u.model["pinned"]["ior"], 1.5);
+
+    // A value outside the core axis's domain is refused with the range.
+    TempDir dir;
+    const std::string out = "'" + (dir / "out") + "'";
+    const auto bad = run_cli("generate --preset mitsuba3 --alpha 2 -o " + out, dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.err.find("--alpha 2 is outside the domain of axis 'alpha' of core table 'ggx_glass_albedo'"),
+              std::string::npos)
+        << bad.err;
+    EXPECT_NE(bad.err.find("allowed: 0 to 1"), std::string::npos) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(dir.path() / "out/mitsuba3_roughplastic_external_transmittance.exr"));
+    const auto low = run_cli("generate --preset mitsuba3 --ior 0.5 -o " + out, dir);
+    EXPECT_EQ(low.exit_code, 2);
+    EXPECT_NE(low.err.find("allowed: 1 to inf"), std::string::npos) << low.err;
 }
 
 // Babylon: R = B term, G = A + B, B = Charlie at alpha = r^2; 256 x 256.

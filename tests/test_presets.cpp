@@ -199,7 +199,7 @@ TEST(Presets, AllGeneratesTheDefaultSetOnlyAndListTagsPresets) {
 namespace {
 // The coordinate a recipe table's texel gives a core table's axis `name`: the
 // axis of that name, or the square (root) of the axis whose square_name
-// (root_name) it is.
+// (root_name) it is, or the default of the pin that holds it.
 double core_coordinate(const tables::RecipeTable& t, const std::string& name, const std::vector<double>& c) {
     for (std::size_t i = 0; i < t.axes.size(); ++i)
         if (t.axes[i].axis.name == name) return c[i];
@@ -207,6 +207,8 @@ double core_coordinate(const tables::RecipeTable& t, const std::string& name, co
         if (t.axes[i].square_name == name) return c[i] * c[i];
         if (t.axes[i].root_name == name) return std::sqrt(c[i]);
     }
+    for (const tables::AxisPin& pin : t.pins)
+        if (pin.axis == name) return std::stod(pin.default_value);
     ADD_FAILURE() << t.id << ": nothing feeds " << name;
     return std::nan("");
 }
@@ -310,6 +312,13 @@ TEST(Presets, RecipeMistakesAreRefusedWithTheBadValueAndWhatIsAllowed) {
     bad.options = {{"fresnel", "exact"}};
     EXPECT_NE(message(bad).find("option 'fresnel' is taken by none of its core tables"), std::string::npos)
         << message(bad);
+    // A pin holds a core axis no recipe axis feeds, and must hold one.
+    bad = t;
+    bad.pins = {{bad.axes[0].axis.name, "help", "0.5"}};
+    EXPECT_NE(message(bad).find("pin '" + bad.axes[0].axis.name + "' names one of its own axes"), std::string::npos)
+        << message(bad);
+    bad.pins = {{"ior", "help", "1.5"}};
+    EXPECT_NE(message(bad).find("pin 'ior' holds no axis of its core tables"), std::string::npos) << message(bad);
 }
 
 // Each preset table's value is its recipe over its core tables' values, within

@@ -45,6 +45,17 @@ inline constexpr double kGlassAbsTolerance = 1e-9;
 // exact integral, which a test checks.
 inline constexpr double kGlassTableTolerance = 5e-8;
 
+// E_T with the separable G by an n x n tensor Gauss-Legendre rule over the
+// visible-normal sample space (u1, u2) in [0, 1]^2 of Heitz 2018: the mean
+// over the nodes of (1 - F(wo.m)) G1(wi) for the direction wi refracted
+// about the sampled normal m, counted when wi leaves on the far side. A
+// second route to ggx_glass's E_T (separable), independent of its
+// half-vector quadrature; at n = 32 it is Mitsuba 3's construction of the
+// roughplastic transmittance (microfacet.h, eval_transmittance, for eta > 1).
+// The integrand has kinks where wi grazes the surface, so the rule converges
+// slowly; mu_o in (0, 1], alpha > 0, eta > 0, nodes >= 1.
+double ggx_transmission_visible_normal_rule(double mu_o, double alpha, double eta, int nodes);
+
 // Deterministic quadrature over the half vector. value = {E_R, E_T}, error =
 // the estimated absolute error of each. mu_o in [0, 1] (0 is taken at
 // 1e-16, the grazing limit), alpha >= 0 (0: the smooth interface, F and

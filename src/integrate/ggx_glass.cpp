@@ -851,4 +851,26 @@ Estimate<2> ggx_glass_average(double alpha, double eta, Visibility vis, double a
                                       eta);
 }
 
+double ggx_transmission_visible_normal_rule(double mu_o, double alpha, double eta, int nodes) {
+    const Ggx ggx{alpha};
+    const Vec3 wo = direction_from_mu(mu_o);
+    const GaussLegendre& rule = gauss_legendre(nodes);
+    double sum = 0.0;
+    for (int i = 0; i < nodes; ++i)
+        for (int j = 0; j < nodes; ++j) {
+            const double u1 = 0.5 * (rule.x[static_cast<std::size_t>(i)] + 1.0), u2 = 0.5 * (rule.x[static_cast<std::size_t>(j)] + 1.0);
+            const Vec3 m = ggx.sample_visible_normal(wo, u1, u2);
+            const double c = dot(wo, m);
+            const double sin2_t = (1.0 - c * c) / (eta * eta);
+            if (c <= 0.0 || sin2_t >= 1.0) continue;  // unseen, or total internal reflection
+            const double cos_t = std::sqrt(1.0 - sin2_t);
+            const double k = c / eta - cos_t;
+            const double wi_z = -wo.z / eta + k * m.z;
+            if (wi_z >= 0.0) continue;  // refracted back to the near side
+            const double w = 0.25 * rule.w[static_cast<std::size_t>(i)] * rule.w[static_cast<std::size_t>(j)];
+            sum += w * (1.0 - fresnel_dielectric(c, eta)) * ggx.G1(-wi_z);
+        }
+    return sum;
+}
+
 }  // namespace brdflut

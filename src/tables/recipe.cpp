@@ -28,11 +28,14 @@ RecipePlan::Feed feed_of(const RecipeTable& e, const TableDefinition& core, cons
         if (e.axes[i].square_name == name) return {static_cast<int>(i), AxisConversion::square};
         if (e.axes[i].root_name == name) return {static_cast<int>(i), AxisConversion::root};
     }
+    for (std::size_t i = 0; i < e.pins.size(); ++i)
+        if (e.pins[i].axis == name) return {-1, AxisConversion::same, static_cast<int>(i)};
     std::vector<std::string> names;
     for (const AxisSpec& a : e.axes) names.push_back(a.axis.name);
     throw Error("recipe table '" + e.id + "': no axis feeds axis '" + name + "' of core table '" + core.id +
                 "'; its axes (" + list(names) +
-                ") feed a core axis of their own name, of their square_name or of their root_name");
+                ") feed a core axis of their own name, of their square_name or of their root_name, "
+                "and a pin (RecipeTable::pins) holds the axis of its name");
 }
 
 double convert(AxisConversion c, double v) {
@@ -51,8 +54,8 @@ public:
         std::vector<RecipePlan::Feed> feeds;
     };
 
-    RecipeEvaluator(std::vector<Core> cores, std::vector<RecipePlan::Channel> channels)
-        : cores_(std::move(cores)), channels_(std::move(channels)) {}
+    RecipeEvaluator(std::vector<Core> cores, std::vector<RecipePlan::Channel> channels, std::vector<double> pins)
+        : cores_(std::move(cores)), channels_(std::move(channels)), pins_(std::move(pins)) {}
 
     // Each core table at the texel's coordinates converted to its axes, with
     // the recipe's texel index (its Monte Carlo seed); then per channel the
@@ -65,7 +68,8 @@ public:
             double x[3] = {0.0, 0.0, 0.0};
             const std::vector<RecipePlan::Feed>& feeds = cores_[i].feeds;
             for (std::size_t k = 0; k < feeds.size(); ++k)
-                x[k] = convert(feeds[k].conversion, c[feeds[k].axis]);
+                x[k] = feeds[k].axis < 0 ? pins_[static_cast<std::size_t>(feeds[k].pin)]
+                                         : convert(feeds[k].conversion, c[feeds[k].axis]);
             in[i] = cores_[i].evaluator->evaluate(x, texel);
             out.evaluations += in[i].evaluations;
         }
@@ -104,6 +108,7 @@ private:
 
     std::vector<Core> cores_;
     std::vector<RecipePlan::Channel> channels_;
+    std::vector<double> pins_;
 };
 
 const TableDefinition* catalogue_table(const std::string& id) {
@@ -167,6 +172,17 @@ RecipePlan plan_recipe(const RecipeTable& e, const std::function<const TableDefi
         };
         RecipePlan::Channel out{plan_terms(r.terms), r.offset, plan_terms(r.den_terms), r.den_offset};
         plan.channels.push_back(out);
+    }
+    for (std::size_t i = 0; i < e.pins.size(); ++i) {
+        const std::string& name = e.pins[i].axis;
+        for (const AxisSpec& a : e.axes)
+            if (a.axis.name == name)
+                throw Error(what + ": pin '" + name + "' names one of its own axes; a pin holds a core axis "
+                                   "that no recipe axis feeds");
+        bool feeds = false;
+        for (const RecipePlan::Core& core : plan.cores)
+            for (const RecipePlan::Feed& f : core.feeds) feeds = feeds || f.pin == static_cast<int>(i);
+        if (!feeds) throw Error(what + ": pin '" + name + "' holds no axis of its core tables");
     }
     for (const auto& [name, value] : e.options) {
         std::vector<std::string> known;
@@ -233,6 +249,7 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
     d.engine_source = entry.engine_source;
     d.engine_storage = entry.engine_storage;
     for (const ChannelRecipe& c : entry.channels) d.channel_recipes.push_back(channel_expression(c));
+    for (const AxisPin& pin : entry.pins) d.options.push_back({pin.axis, pin.help, pin.default_value, {}});
     d.checks = entry.checks;
     // Until resolve_recipe_tables has read the core tables.
     d.supports_monte_carlo = true;
@@ -244,6 +261,24 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
     e.checks.clear();
     d.prepare = [e, model, method](const TableSettings& s) {
         const RecipePlan plan = plan_recipe(e, catalogue_table);
+        // Each pin's value, in the domain of every core axis it holds.
+        std::vector<double> pins;
+        nlohmann::json out_model = model;
+        for (std::size_t i = 0; i < e.pins.size(); ++i) {
+            const std::string& name = e.pins[i].axis;
+            const double v = parse_number(name, param(s, name));
+            for (const RecipePlan::Core& core : plan.cores)
+                for (std::size_t k = 0; k < core.feeds.size(); ++k) {
+                    if (core.feeds[k].pin != static_cast<int>(i)) continue;
+                    const AxisSpec& spec = core.def->axes[k];
+                    if (v < spec.domain_min || v > spec.domain_max)
+                        throw Error("--" + name + " " + number(v) + " is outside the domain of axis '" + name +
+                                    "' of core table '" + core.def->id + "' (table '" + e.id + "'); allowed: " +
+                                    number(spec.domain_min) + " to " + number(spec.domain_max));
+                }
+            pins.push_back(v);
+            out_model["pinned"][name] = v;
+        }
         std::vector<RecipeEvaluator::Core> cores;
         double tolerance = 0.0;
         for (const RecipePlan::Core& core : plan.cores) {
@@ -265,8 +300,8 @@ TableDefinition recipe_table(const RecipeTable& entry, const std::string& preset
             cores.push_back({std::move(p.evaluator), core.feeds});
         }
         PreparedTable out;
-        out.evaluator = std::make_unique<RecipeEvaluator>(std::move(cores), plan.channels);
-        out.model = model;
+        out.evaluator = std::make_unique<RecipeEvaluator>(std::move(cores), plan.channels, std::move(pins));
+        out.model = out_model;
         out.method = s.method == Method::monte_carlo ? monte_carlo_method(method.mc_sampler, s)
                                                      : quadrature_method(method.quadrature_rule, tolerance);
         return out;

@@ -52,6 +52,17 @@ struct ChannelRecipe {
 // metadata records (model.recipe) and `list` shows.
 std::string channel_expression(const ChannelRecipe& c);
 
+// A core axis the recipe holds at one value instead of tabulating it: the
+// value of the recipe table's option named after the axis (`--alpha 0.1`),
+// for engines that tabulate one material at a time (Mitsuba 3's roughplastic
+// precomputes its tables at the material's alpha and index). The option's
+// value must lie in the domain of every core table's axis of that name.
+struct AxisPin {
+    std::string axis;  // the core axis, and the option's name
+    std::string help;
+    std::string default_value;
+};
+
 // A table declared as a recipe.
 struct RecipeTable {
     std::string id;
@@ -67,6 +78,9 @@ struct RecipeTable {
     // The integer encoding the engine stores the texture in, if any
     // (TableDefinition::engine_storage).
     std::optional<Storage> engine_storage = std::nullopt;
+    // Core axes held at one value (options of the table), fed to every core
+    // table with an axis of that name that no recipe axis feeds.
+    std::vector<AxisPin> pins = {};
 };
 
 // The method metadata of a group of recipe tables: the rule's description
@@ -84,9 +98,12 @@ enum class AxisConversion { same, square, root };
 // order of first use), its definition and, per core axis, the recipe axis
 // that feeds it; per channel the terms as (core index, channel, coef).
 struct RecipePlan {
+    // A core axis is fed by recipe axis `axis`, or, when axis < 0, by the
+    // value of pin `pin` (RecipeTable::pins).
     struct Feed {
         int axis;
         AxisConversion conversion;
+        int pin = -1;
     };
     struct Core {
         const TableDefinition* def;
