@@ -15,6 +15,15 @@ namespace brdflut::cli {
 
 int run_list(bool presets_only, bool json);
 
+// brdflut metals: F0, F82 tint, edge tint and average of the metal presets
+// from their measured spectra in an RGB space, and each reduction's error.
+struct MetalsArgs {
+    std::string colour_space = "srgb";
+    std::string metal;  // empty: every metal
+    bool json = false;
+};
+int run_metals(const MetalsArgs& a);
+
 // The `--help` text of each command, in the order `brdflut --help` lists
 // them (name, text).
 using CommandHelp = std::vector<std::pair<std::string, std::string>>;

@@ -175,7 +175,17 @@ int main(int argc, char** argv) {
     add_describe_options(*smp, s.describe);
     smp->add_option("--at", s.at, "Parameter point, e.g. cos_theta=0.5,alpha=0.1")->required();
 
-    const std::vector<std::string> commands{"list", "docs", "generate", "verify", "furnace", "compare", "identify", "inspect", "sample"};
+    CLI::App* mtl = app.add_subcommand(
+        "metals", "RGB colours of the metal presets from their measured spectra (CIE 1931 observer, D65)");
+    MetalsArgs metals;
+    mtl->add_option("--colour-space", metals.colour_space,
+                    "RGB space: srgb (Rec.709 primaries, D65), acescg (AP1, the ACES white) or rec2020 (D65)")
+        ->capture_default_str();
+    mtl->add_option("--metal", metals.metal, "Only this metal (a --metal name of fresnel_conductor)");
+    mtl->add_flag("--json", metals.json, "Print as JSON");
+
+    const std::vector<std::string> commands{"list",     "docs",    "generate", "verify", "furnace",
+                                            "compare",  "identify", "inspect", "sample", "metals"};
     if (argc > 1 && argv[1][0] != '-' && std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
         std::string known;
         for (const auto& name : commands) known += (known.empty() ? "" : ", ") + name;
@@ -215,6 +225,7 @@ int main(int argc, char** argv) {
             collect_params(*smp, s.describe.table);
             return run_sample(s);
         }
+        if (app.got_subcommand(mtl)) return run_metals(metals);
         if (app.got_subcommand(docs)) {
             // The formatter directly: App::help() would print the selected
             // subcommand's (docs) help for the whole tool.
