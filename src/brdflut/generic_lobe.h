@@ -146,6 +146,37 @@ public:
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
 };
 
+// The sampler of the sheen lobes: an equal mixture of the cosine-weighted
+// hemisphere and the mirror directions of normals. `normal(u, phi)` returns a
+// normal drawn from the lobe's normal distribution for a uniform u and the
+// azimuth phi, oriented as the lobe wants it seen from wo (a normal facing
+// away from wo is no sample); normal_pdf(h) is that draw's density per solid
+// angle at the unit half vector h of wo and wi.
+template <class NormalDraw, class NormalPdf>
+LobeSample cosine_and_mirror_mixture(const Vec3& wo, double u1, double u2, NormalDraw normal, NormalPdf normal_pdf) {
+    LobeSample s;
+    const bool cosine = u1 < 0.5;
+    const double u = cosine ? 2.0 * u1 : 2.0 * u1 - 1.0;
+    const double phi = kTwoPi * u2;
+    if (cosine) {
+        const double r = std::sqrt(u);
+        s.wi = {r * std::cos(phi), r * std::sin(phi), safe_sqrt(1.0 - u)};
+    } else {
+        const Vec3 m = normal(u, phi);
+        const double o_m = dot(wo, m);
+        if (!(o_m > 0.0)) return {};
+        s.wi = {2.0 * o_m * m.x - wo.x, 2.0 * o_m * m.y - wo.y, 2.0 * o_m * m.z - wo.z};
+    }
+    if (!(s.wi.z > 0.0)) return {};
+    const Vec3 h{wo.x + s.wi.x, wo.y + s.wi.y, wo.z + s.wi.z};
+    const double len = std::sqrt(dot(h, h));
+    const Vec3 hn{h.x / len, h.y / len, h.z / len};
+    const double o_h = dot(wo, hn);
+    const double reflected = o_h > 0.0 ? normal_pdf(hn) / (4.0 * o_h) : 0.0;
+    s.pdf = 0.5 * s.wi.z * kInvPi + 0.5 * reflected;
+    return s;
+}
+
 // The hints of a microfacet reflection lobe of width alpha: its peak at the
 // mirror direction, width 2 alpha in the plane of incidence (wi turns twice
 // as far as the half vector), aspect min(1, mu_o + alpha) across it.

@@ -68,29 +68,13 @@ LobeHints CharlieLobe::hints(const Vec3& wo) const {
 }
 
 LobeSample CharlieLobe::sample(const Vec3& wo, double u1, double u2) const {
-    LobeSample s;
-    const bool cosine = u1 < 0.5;
-    const double u = cosine ? 2.0 * u1 : 2.0 * u1 - 1.0;
-    const double phi = kTwoPi * u2;
-    if (cosine) {
-        const double r = std::sqrt(u);
-        s.wi = {r * std::cos(phi), r * std::sin(phi), safe_sqrt(1.0 - u)};
-    } else {
-        const double st = charlie_.sample_sin_theta(u), ct = safe_sqrt(1.0 - st * st);
-        const Vec3 m{st * std::cos(phi), st * std::sin(phi), ct};
-        const double o_m = dot(wo, m);
-        if (!(o_m > 0.0)) return {};  // the mixture's density counts only normals facing wo
-        s.wi = {2.0 * o_m * m.x - wo.x, 2.0 * o_m * m.y - wo.y, 2.0 * o_m * m.z - wo.z};
-    }
-    if (!(s.wi.z > 0.0)) return {};
-    // The mixture's density at wi: the cosine's and the reflected normals'.
-    const Vec3 h{wo.x + s.wi.x, wo.y + s.wi.y, wo.z + s.wi.z};
-    const double len = std::sqrt(dot(h, h));
-    const Vec3 m{h.x / len, h.y / len, h.z / len};
-    const double o_m = dot(wo, m);
-    const double reflected = o_m > 0.0 ? charlie_.D(m.z) * m.z / (4.0 * o_m) : 0.0;
-    s.pdf = 0.5 * s.wi.z * kInvPi + 0.5 * reflected;
-    return s;
+    return cosine_and_mirror_mixture(
+        wo, u1, u2,
+        [&](double u, double phi) {
+            const double st = charlie_.sample_sin_theta(u), ct = safe_sqrt(1.0 - st * st);
+            return Vec3{st * std::cos(phi), st * std::sin(phi), ct};
+        },
+        [&](const Vec3& h) { return charlie_.D(h.z) * h.z; });
 }
 
 }  // namespace brdflut
