@@ -1005,8 +1005,9 @@ std::vector<PresetDeclaration> declare() {
                     "(64x64, rows sqrt(1 - cos theta), columns roughness, end points), refitted, with the "
                     "per-texel error table ltc_ggx_error and the F82-tint moment ltc_f82; the same layout "
                     "fitted to the Charlie sheen with Neubelt's visibility (ltc_sheen_charlie, _norm, _error) "
-                    "and with the Estevez-Kulla shadowing (ltc_sheen_charlie_ek, _norm, _error) and EON diffuse "
-                    "(ltc_eon, _norm, _error) lobes",
+                    "and with the Estevez-Kulla shadowing (ltc_sheen_charlie_ek, _norm, _error), EON diffuse "
+                    "(ltc_eon, _norm, _error) and Zeltner 2022's analytic volumetric sheen (ltc_sheen_zeltner, _norm, "
+                    "_error) lobes",
                     PixelType::float32},
                    {{"ltc_f82",
                      "F82-tint moment on ltc_2's grid: an area light on an F82 metal is (F0 (n0 - n1) + n1 - b C) "

@@ -11,6 +11,7 @@
 #include "brdflut/random.h"
 #include "brdflut/zeltner_sheen.h"
 #include "tables/checks.h"
+#include "tables/ltc_tables.h"
 #include "tables/registry.h"
 
 namespace brdflut {
@@ -219,6 +220,47 @@ ClosedFormCheck average_check() {
             }};
 }
 
+// ---------------------------------------------------------------------------
+// The LTC of the lobe in Heitz's layout (as ltc_sheen_charlie_ek): 64x64,
+// columns the talk's alpha at end points (linear, at least 0.01), rows
+// cos(theta) = 1 - (j/63)^2, fitted through the generic path; its norm held
+// to the two rules above.
+
+std::vector<TableDefinition> heitz_zeltner_ltc_layer() {
+    LtcLayer layer;
+    layer.name = "sheen_zeltner";
+    layer.matrix_description =
+        "LTC of the Zeltner 2022 analytic volumetric sheen in ltc_1's layout (alpha >= 0.01)";
+    layer.norm_description = "Norm n0 of the Zeltner 2022 analytic volumetric sheen on ltc_sheen_zeltner's grid";
+    layer.error_description =
+        "Per-texel error of the Zeltner 2022 sheen LTC fit in Heitz's layout (the texels of ltc_sheen_zeltner)";
+    layer.roughness_meaning = "the talk's alpha (sigma = alpha^2), linear, computed at 0.01 below it";
+    layer.model = [](const std::map<std::string, std::string>&) {
+        nlohmann::json m = zeltner_model();
+        m["brdf"] = std::string(m["brdf"]) + ", fitted by a linearly transformed cosine";
+        m["roughness"] = "alpha = max(the column coordinate, 0.01), the talk's alpha (not squared)";
+        return m;
+    };
+    layer.norms_rule = "n0 by the generic lobe path (as sheen_zeltner_albedo E, to 1e-8)";
+    layer.engine_source = "selfshadow/ltc_code fit/fitLTC.cpp (packTab, ltc_1's grid); the lobe of tizian/ltc-sheen "
+                          "fitting/src/bsdfs/sheen_approx.h @92624114a8ffc433389256f79a10332e54ba17f6";
+    const std::uint64_t key = ltc_lobe_key("zeltner_approx_sheen");
+    layer.lobe = [key](double r, double mu, const std::map<std::string, std::string>&) {
+        const double alpha = std::max(r, kMinAlpha);
+        return LtcLobe(std::make_shared<const ZeltnerApproxSheenLobe>(alpha), std::max(mu, kMinMu), alpha, key,
+                       kTableTolerance);
+    };
+    layer.norm_checks = {{"n0 vs the single-scattering product rule plus the multiple-scattering 1-D rule (alpha >= 0.5)",
+                          2.0 * kTableTolerance + 1e-9, [](const TexelEvaluator& e) {
+                              const std::vector<std::array<double, 2>> pts = {{0.5, 0.3}, {0.75, 0.9}, {1.0, 0.05}};
+                              return tables::worst_over(e, pts, 0, [](const auto& p) {
+                                  return single_scattering_by_product_rule(p[1], p[0]) +
+                                         multiple_scattering_by_1d_rule(p[1], p[0]);
+                              });
+                          }}};
+    return heitz_ltc_layer(layer);
+}
+
 }  // namespace
 }  // namespace sheen_zeltner_family
 
@@ -232,7 +274,8 @@ void register_sheen_zeltner_family(FamilyEntries& family) {
          "the reference BRDF the talk fits its two-parameter LTC to (its \"approx\" table); the simulated layer "
          "itself (the \"volume\" table, which Cycles, Unreal, OSL and Babylon.js ship) is not made. Tables: the "
          "directional albedo with its single-scattering part, and their averages, through the generic lobe path; "
-         "the checks integrate the two terms by other rules."});
+         "the checks integrate the two terms by other rules; and its LTC in Heitz's layout (ltc_sheen_zeltner, "
+         "_norm, _error, in the ltc preset)."});
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::albedo, "sheen_zeltner_albedo",
                        "Zeltner 2022 analytic volumetric sheen: albedo E and its single-scattering part E_ss",
@@ -245,6 +288,7 @@ void register_sheen_zeltner_family(FamilyEntries& family) {
                        {zeltner_alpha_axis(16)},
                        {"E_avg: 2 * integral of E(mu) mu dmu", "E_ss avg: the single-scattering part's"}));
     out.back().checks = {average_check()};
+    for (TableDefinition& d : heitz_zeltner_ltc_layer()) out.push_back(std::move(d));
 }
 
 }  // namespace brdflut
