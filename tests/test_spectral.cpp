@@ -194,6 +194,18 @@ TEST(Spectral, MetalsCommandPrintsEverySpaceAndRefusesUnknownNames) {
         const MetalColours gold = metal_colours(metal_spectrum("gold"), colour_space_from_string(space));
         EXPECT_EQ(j["metals"][0]["f0"][1].get<double>(), gold.f0[1]);
     }
+    // One metal: its row alone, the same values as in the whole list.
+    const auto one = run_cli("metals --json --metal copper --colour-space acescg", dir);
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const nlohmann::json c = nlohmann::json::parse(one.out);
+    ASSERT_EQ(c["metals"].size(), 1u);
+    EXPECT_EQ(c["metals"][0]["name"], "copper");
+    EXPECT_EQ(c["metals"][0]["f82_tint"][2].get<double>(),
+              metal_colours(metal_spectrum("copper"), ColourSpace::acescg).f82_tint[2]);
+    const auto text = run_cli("metals --metal zinc", dir);
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("\nzinc "), std::string::npos) << text.out;
+    EXPECT_EQ(text.out.find("gold"), std::string::npos) << text.out;
     const auto bad = run_cli("metals --colour-space xyz", dir);
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_NE(bad.err.find("allowed: srgb, acescg, rec2020"), std::string::npos) << bad.err;

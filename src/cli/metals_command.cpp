@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,12 +19,15 @@ int run_metals(const MetalsArgs& a) {
         for (const MetalSpectrum& m : metal_spectra()) metals.push_back(&m);
     else
         metals.push_back(&metal_spectrum(a.metal));
+    std::vector<MetalColours> colours;
+    for (const MetalSpectrum* m : metals) colours.push_back(metal_colours(*m, space));
     if (a.json) {
         nlohmann::json out = {{"colour_space", to_string(space)},
                               {"colorimetry", colour_space_description(space)},
                               {"metals", nlohmann::json::array()}};
-        for (const MetalSpectrum* m : metals) {
-            const MetalColours c = metal_colours(*m, space);
+        for (std::size_t i = 0; i < metals.size(); ++i) {
+            const MetalSpectrum* m = metals[i];
+            const MetalColours& c = colours[i];
             out["metals"].push_back({{"name", m->name},
                                      {"data", "src/data/metals/" + std::string(m->file)},
                                      {"f0", c.f0},
@@ -42,8 +46,9 @@ int run_metals(const MetalsArgs& a) {
     std::cout << colour_space_description(space) << "\n\n";
     std::cout << "metal      F0 (R G B)             F82 tint               edge tint (g)          F_avg\n";
     char line[256];
-    for (const MetalSpectrum* m : metals) {
-        const MetalColours c = metal_colours(*m, space);
+    for (std::size_t i = 0; i < metals.size(); ++i) {
+        const MetalSpectrum* m = metals[i];
+        const MetalColours& c = colours[i];
         std::snprintf(line, sizeof line,
                       "%-10s %.4f %.4f %.4f  %.4f %.4f %.4f  %.4f %.4f %.4f  %.4f %.4f %.4f\n",
                       std::string(m->name).c_str(), c.f0[0], c.f0[1], c.f0[2], c.f82_tint[0], c.f82_tint[1],
@@ -53,8 +58,9 @@ int run_metals(const MetalsArgs& a) {
     }
     std::cout << "\nlargest |F - spectral F| over mu and channels\n";
     std::cout << "metal      Schlick   F82 tint  Gulbrandsen  650/550/450 nm\n";
-    for (const MetalSpectrum* m : metals) {
-        const MetalColours c = metal_colours(*m, space);
+    for (std::size_t i = 0; i < metals.size(); ++i) {
+        const MetalSpectrum* m = metals[i];
+        const MetalColours& c = colours[i];
         std::snprintf(line, sizeof line, "%-10s %.2e  %.2e  %.2e     %.2e\n", std::string(m->name).c_str(),
                       c.error_schlick, c.error_f82, c.error_gulbrandsen, c.error_three_wavelengths);
         std::cout << line;

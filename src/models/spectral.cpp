@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "brdflut/error.h"
 #include "brdflut/f82.h"

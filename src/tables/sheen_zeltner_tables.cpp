@@ -53,16 +53,19 @@ nlohmann::json zeltner_model() {
             {"source", "tizian/ltc-sheen fitting/src/bsdfs/sheen_approx.h @92624114a8ffc433389256f79a10332e54ba17f6"}};
 }
 
-// The single-scattering part alone, for the second channel.
-class SingleScatteringLobe final : public GenericLobe {
+// One term of the lobe alone: 0 the single scattering, 1 the multiple
+// scattering. The tables integrate the two apart and store E as their sum,
+// so that neither is integrated twice.
+class TermLobe final : public GenericLobe {
 public:
-    explicit SingleScatteringLobe(double alpha) : lobe_(alpha) {}
-    double f(const Vec3& wo, const Vec3& wi) const override { return lobe_.terms(wo, wi)[0]; }
+    TermLobe(double alpha, int term) : lobe_(alpha), term_(static_cast<std::size_t>(term)) {}
+    double f(const Vec3& wo, const Vec3& wi) const override { return lobe_.terms(wo, wi)[term_]; }
     bool has_sampler() const override { return true; }
     LobeSample sample(const Vec3& wo, double u1, double u2) const override { return lobe_.sample(wo, u1, u2); }
 
 private:
     ZeltnerApproxSheenLobe lobe_;
+    std::size_t term_;
 };
 
 enum class Kind { albedo, average };
@@ -79,23 +82,23 @@ public:
         const std::uint64_t seed = mix_seed(seed_, texel);
         const double mu = kind_ == Kind::average ? 1.0 : std::max(c[0], kMinMu);
         const double alpha = std::max(kind_ == Kind::average ? c[0] : c[1], kMinAlpha);
-        const ZeltnerApproxSheenLobe all(alpha);
-        const SingleScatteringLobe single(alpha);
         GenericOptions opt;
-        opt.abs_tol = abs_tol_;
+        opt.abs_tol = 0.5 * abs_tol_;  // each term's half: E = E_ss + E_ms stays within abs_tol
         std::array<Estimate<1>, 2> e;
         for (int k = 0; k < 2; ++k) {
-            const GenericLobe& lobe = k == 0 ? static_cast<const GenericLobe&>(all) : single;
+            const TermLobe lobe(alpha, k);
             if (kind_ == Kind::average)
                 e[k] = mc ? generic_moment_average_mc<1>(lobe, {kWeightOne}, samples_, seed)
                           : generic_albedo_average(lobe, opt);
             else
                 e[k] = mc ? generic_moments_mc<1>(lobe, mu, {kWeightOne}, samples_, seed)
                           : generic_albedo(lobe, mu, opt);
-            out.value[static_cast<std::size_t>(k)] = e[k].value[0];
-            out.error[static_cast<std::size_t>(k)] = scale * e[k].error[0];
             out.evaluations += e[k].evaluations;
         }
+        out.value[0] = e[0].value[0] + e[1].value[0];
+        out.error[0] = scale * (e[0].error[0] + e[1].error[0]);
+        out.value[1] = e[0].value[0];
+        out.error[1] = scale * e[0].error[0];
         return out;
     }
 
