@@ -103,6 +103,10 @@ struct LtcFitOptions {
     // light term (ltc_fit_light_bank), relative to n0 (the light errors
     // that matter are 1e-3 of n0 and more).
     double light_tolerance = 1e-5;
+    // The two-parameter form of Zeltner, Burley and Chiang 2022: no rotation
+    // and m22 = m11, so M^-1 = [[a, 0, b], [0, a, 0], [0, 0, 1]] up to scale
+    // (params[0] = 0, params[2] = params[1]).
+    bool two_parameter = false;
 };
 // Options for a quality (draft, standard, reference).
 LtcFitOptions ltc_fit_options(int quality_level);

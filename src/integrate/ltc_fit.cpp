@@ -360,17 +360,17 @@ double clamp_param(LtcLobeKind kind, double p) {
 namespace {
 // Nelder-Mead from x0, restarted from its best vertex with simplices 5 times
 // smaller until a restart no longer improves f.
-template <class F>
-std::array<double, 4> descend_from(F&& f, std::array<double, 4> x, const std::array<double, 4>& step0, double& fx,
+template <std::size_t N, class F>
+std::array<double, N> descend_from(F&& f, std::array<double, N> x, const std::array<double, N>& step0, double& fx,
                                    int& evals) {
     fx = f(x);
     ++evals;
     double shrink = 1.0;
     for (int restart = 0; restart < 8; ++restart) {
         double fn = 0.0;
-        std::array<double, 4> steps = step0;
+        std::array<double, N> steps = step0;
         for (double& v : steps) v *= shrink;
-        const std::array<double, 4> xn = nelder_mead<4>(f, x, steps, fn, 800, evals);
+        const std::array<double, N> xn = nelder_mead<N>(f, x, steps, fn, 800, evals);
         const bool improved = fn < fx * (1.0 - 1e-9);
         if (fn < fx) {
             x = xn;
@@ -498,8 +498,12 @@ double ltc_local_minimum_drop(const LtcLobe& lobe, const LtcFit& fit, const LtcF
     double drop = -std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < 4; ++k)
         for (double sgn : {-1.0, 1.0}) {
+            // The two-parameter form moves ln m11 and ln m22 together and
+            // keeps theta at 0.
+            if (opt.two_parameter && (k == 0 || k == 2)) continue;
             std::array<double, 4> p = fit.params;
             p[k] += sgn * steps[k];
+            if (opt.two_parameter && k == 1) p[2] = p[1];
             drop = std::max(drop, (j0 - fit_objective(s, ltc_inverse_from_params(p).matrix())) / j0);
         }
     return drop;
@@ -527,8 +531,22 @@ LtcFit fit_ltc_from(const LtcLobe& lobe, const std::array<double, 4>* start, con
     auto f = [&](const std::array<double, 4>& p) { return fit_objective(s, ltc_inverse_from_params(p).matrix()); };
 
     int evals = 0;
+    if (opt.two_parameter) {
+        // theta = 0 and m22 = m11: the parameters (ln m11, m13 / m11).
+        auto f2 = [&](const std::array<double, 2>& q) { return f({0.0, q[0], q[0], q[1]}); };
+        const std::array<double, 4>& x0 = start ? *start : s.x0;
+        double fx = 0.0;
+        const std::array<double, 2> q = descend_from<2>(f2, {0.5 * (x0[1] + x0[2]), x0[3]},
+                                                        {0.5 * (s.step[1] + s.step[2]), s.step[3]}, fx, evals);
+        out.params = {0.0, q[0], q[0], q[1]};
+        out.minv = ltc_inverse_from_params(out.params);
+        out.objective = fx;
+        out.below_horizon = below_horizon_of(out.minv);
+        out.evaluations = evals;
+        return out;
+    }
     auto descend = [&](const std::array<double, 4>& x0, const std::array<double, 4>& step0, double& fx) {
-        return descend_from(f, x0, step0, fx, evals);
+        return descend_from<4>(f, x0, step0, fx, evals);
     };
     double fx = 0.0;
     std::array<double, 4> x = descend(start ? *start : s.x0, s.step, fx);

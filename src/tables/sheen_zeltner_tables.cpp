@@ -275,7 +275,8 @@ void register_sheen_zeltner_family(FamilyEntries& family) {
          "microflakes standing along the normal (cross-section sigma = alpha^2, specular phase function, no "
          "absorption), its single scattering exact and its multiple scattering the talk's fitted term. This is "
          "the reference BRDF the talk fits its two-parameter LTC to (its \"approx\" table); the simulated layer "
-         "itself (the \"volume\" table, which Cycles, Unreal, OSL and Babylon.js ship) is not made. Tables: the "
+         "itself (the \"volume\" table, which Cycles, Unreal, OSL and Babylon.js ship) is the sheen_volume family. "
+         "Tables: the "
          "directional albedo with its single-scattering part, and their averages, through the generic lobe path; "
          "the checks integrate the two terms by other rules; and its LTC in Heitz's layout (ltc_sheen_zeltner, "
          "_norm, _error, in the ltc preset)."});
