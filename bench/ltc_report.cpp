@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_util.h"
 #include "brdflut/catalogue.h"
 #include "brdflut/generate.h"
 #include "brdflut/ltc.h"
@@ -23,6 +24,9 @@
 #include "brdflut/ltc_report.h"
 
 using namespace brdflut;
+using brdflut::bench::cpu_seconds;
+using brdflut::bench::load_average;
+using brdflut::bench::quantile;
 
 namespace {
 std::vector<double> read_numbers(const std::string& path) {
@@ -31,17 +35,6 @@ std::vector<double> read_numbers(const std::string& path) {
     double x;
     while (in >> x) v.push_back(x);
     return v;
-}
-double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
-std::string load_average() {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a.empty() ? "unknown" : a + " " + b + " " + c;
-}
-double quantile(std::vector<double> v, double q) {
-    std::sort(v.begin(), v.end());
-    return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1))];
 }
 }  // namespace
 

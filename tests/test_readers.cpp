@@ -657,6 +657,35 @@ TEST(SourceArray, ShapeOptionsParseAndBadOnesNameTheText) {
 }
 
 // Blender Cycles' tables as the engine ships them (tests/fixtures/cycles/README.md).
+// Cycles' table_sheen_ltc stores its three channels as planes: ":3p"
+// interleaves them on reading, texel (x, y) channel c = flat[c W H + y W + x].
+TEST(SourceArray, PlanarChannelsAreInterleavedOnReading) {
+    const std::string path = std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/cycles/shader_gen_schlick.tables";
+    ReadOptions flat_opt;
+    flat_opt.array = "table_sheen_ltc";
+    const ExrImage flat = read_table_image(path, flat_opt);
+    ASSERT_EQ(flat.pixels.size(), 3072u);
+    ReadOptions opt = flat_opt;
+    opt.shape = parse_array_shape("32x32:3p");
+    EXPECT_TRUE(opt.shape.planar);
+    EXPECT_EQ(to_string(opt.shape), "32x32:3p");
+    const ExrImage img = read_table_image(path, opt);
+    ASSERT_EQ(img.width, 32);
+    ASSERT_EQ(img.height, 32);
+    ASSERT_EQ(img.channel_names.size(), 3u);
+    for (std::size_t y : {0u, 7u, 31u})
+        for (std::size_t x : {0u, 5u, 31u})
+            for (std::size_t c = 0; c < 3; ++c)
+                EXPECT_EQ(img.pixels[(y * 32 + x) * 3 + c], flat.pixels[c * 1024 + y * 32 + x]) << x << " " << y << " " << c;
+    EXPECT_EQ(img.pixels[1], 0.0006);  // texel 0: (A, B, R) from the three planes
+    EXPECT_EQ(img.pixels[2], 1e-05);
+    // The same shape interleaved reads the file's order unchanged.
+    opt.shape = parse_array_shape("32x32:3");
+    EXPECT_EQ(read_table_image(path, opt).pixels, flat.pixels);
+    EXPECT_THROW(parse_array_shape("32x32:p"), Error);
+    EXPECT_THROW(parse_array_shape("32x32:3q"), Error);
+}
+
 TEST(SourceArray, CyclesShaderTablesReadWithTheirSizesAndValues) {
     const std::string path = std::string(BRDFLUT_SOURCE_DIR) + "/tests/fixtures/cycles/shader.tables";
     auto read = [&](const std::string& array, const std::string& shape) {

@@ -110,6 +110,11 @@ struct TableDefinition {
     // the rest of the catalogue together.
     // `compare --as` still checks a file against them.
     bool searched_by_identify = true;
+    // Whether each new value of a parameter costs a solve of its own
+    // (seconds: the sheen layer's transport, a roughness at a time): tests
+    // that evaluate the exact model at many scattered points (the GPU shader
+    // check) evaluate a few of them only.
+    bool solve_per_parameter = false;
     // How the generated shader lookup function (brdflut/shader.h) returns
     // the texel: empty = one struct member per channel; otherwise the name of
     // a result form of the shader writer (src/io/shader_writer.cpp,

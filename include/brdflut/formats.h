@@ -85,10 +85,14 @@ Decode decode_from_string(std::string_view s);  // "linear", "srgb" or "rgbd"; t
 // and `channels` interleaved values per texel. width 0: inferred.
 struct ArrayShape {
     long long width = 0, height = 1, depth = 1, channels = 1;
+    // The channels stored as planes, one whole image after another (":Cp",
+    // Cycles' table_sheen_ltc), instead of interleaved.
+    bool planar = false;
     bool given() const { return width > 0; }
 };
-// "W", "WxH" or "WxHxD", optionally followed by ":C" (1 to 4 channels),
-// e.g. "32x32", "16x16x16", "64x64:2". Throws brdflut::Error naming the text.
+// "W", "WxH" or "WxHxD", optionally followed by ":C" (1 to 4 channels,
+// interleaved) or ":Cp" (stored as planes), e.g. "32x32", "16x16x16",
+// "64x64:2", "32x32:3p". Throws brdflut::Error naming the text.
 ArrayShape parse_array_shape(std::string_view s);
 std::string to_string(const ArrayShape& s);  // "WxH[xD]:C"
 

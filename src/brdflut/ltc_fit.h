@@ -82,6 +82,10 @@ struct LtcLobe {
     std::shared_ptr<const GenericLobe> generic;
     std::uint64_t key = 0;
     double norm_tolerance = 0.0;
+    // The generic kind's n0 when the lobe knows it (>= 0, with its error; a
+    // lobe without Fresnel, n1 = 0): ltc_norms returns it instead of
+    // integrating f.
+    double known_n0 = -1.0, known_n0_error = 0.0;
 
 private:
     bool peaked_ = true;

@@ -119,7 +119,7 @@ private:
 struct SheenVolumeBrdfOptions {
     int nodes_per_panel = 8;
     double horizon_panel = 1e-3;
-    int modes = 12;
+    int modes = 6;
     int doublings = 44;
 };
 
@@ -133,6 +133,10 @@ public:
     // Azimuthal moment m of the multiple scattering (f_ms = sum over m of
     // moment_m cos(m phi), m >= 0).
     double multiple_scattering_moment(int m, double mu_o, double mu_i) const;
+    // Its albedo at mu_o: 2 pi * integral of moment_0(mu_o, mu_i) mu_i dmu_i,
+    // exact for the interpolant (the lobe's albedo is this plus the single
+    // scattering's, which is the layer's R_ss).
+    double multiple_scattering_albedo(double mu_o) const;
     // The discrete layer's albedo for light arriving along node k (every
     // order), and that node's cosine: a second route to SheenVolumeLayer.
     double node_albedo(int k) const;

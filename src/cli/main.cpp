@@ -30,7 +30,7 @@ constexpr const char* kFileHelp =
 void add_read_options(CLI::App& app, ReadArgs& r) {
     app.add_option("--array", r.array, "Read the initializer of this array in a source file");
     app.add_option("--shape", r.shape,
-                   "Shape of a source array or .npy data: W, WxH or WxHxD, optionally :C channels (e.g. 32x32, 64x64:2)");
+                   "Shape of a source array or .npy data: W, WxH or WxHxD, optionally :C channels, interleaved, or :Cp, stored as planes (e.g. 32x32, 64x64:2, 32x32:3p)");
     app.add_option("--decode", r.decode,
                    "How integer samples become numbers: linear (q/255, q/65535), srgb (then the sRGB EOTF) or rgbd "
                    "(8-bit RGBA as Babylon.js's RGBD: (q/255)^2.2 / (a/255)); required for a PNG without brdflut "

@@ -111,7 +111,10 @@ double light_weight_of(double mu) {
 // over the fit bank where the weight is not 0.
 Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
     Setup s = make_setup(lobe, n0, opt.radial_nodes, opt.azimuth_nodes);
-    s.light_weight = light_weight_of(lobe.mu_o);
+    // The two-parameter form has no rotation to spend on the lights near
+    // grazing view, and their exact integrals cost most of a fit of a
+    // narrow lobe there: it fits the densities alone.
+    s.light_weight = opt.two_parameter ? 0.0 : light_weight_of(lobe.mu_o);
     if (s.light_weight > 0.0) {
         s.lights = ltc_fit_light_bank(lobe.mu_o);
         for (const LtcLight& l : s.lights)
@@ -448,6 +451,11 @@ LtcNorms ltc_norms(const LtcLobe& lobe) {
             break;
         }
         case LtcLobeKind::generic: {
+            if (lobe.known_n0 >= 0.0) {
+                n.n0 = lobe.known_n0;
+                n.n0_error = lobe.known_n0_error;
+                break;
+            }
             // The split sums {A, B}: n0 = A + B, n1 = B.
             GenericOptions opt;
             opt.abs_tol = lobe.norm_tolerance;

@@ -204,6 +204,7 @@ ExrImage read_npy(const char* data, std::size_t size, const std::string& name, c
         }
         img.pixels[i] = v;
     }
+    interleave_planes(img, shape);
     return img;
 }
 

@@ -341,7 +341,9 @@ Decode decode_from_string(std::string_view s) {
 ArrayShape parse_array_shape(std::string_view s) {
     const std::string text(s);
     auto bad = [&](const std::string& why) -> Error {
-        return Error("--shape '" + text + "': " + why + "; allowed: W, WxH or WxHxD, optionally :C (1 to 4 channels), e.g. 32x32 or 64x64:2");
+        return Error("--shape '" + text + "': " + why +
+                     "; allowed: W, WxH or WxHxD, optionally :C (1 to 4 channels) or :Cp (channels stored as planes), "
+                     "e.g. 32x32, 64x64:2 or 32x32:3p");
     };
     auto number = [&](std::string_view part, long long max) {
         if (part.empty() || part.size() > 10 || part.find_first_not_of("0123456789") != std::string_view::npos)
@@ -354,7 +356,12 @@ ArrayShape parse_array_shape(std::string_view s) {
     std::string_view dims = s;
     if (const std::size_t colon = s.find(':'); colon != std::string_view::npos) {
         dims = s.substr(0, colon);
-        shape.channels = number(s.substr(colon + 1), 4);
+        std::string_view c = s.substr(colon + 1);
+        if (!c.empty() && c.back() == 'p') {
+            shape.planar = true;
+            c.remove_suffix(1);
+        }
+        shape.channels = number(c, 4);
     }
     long long* fields[3] = {&shape.width, &shape.height, &shape.depth};
     int n = 0;
@@ -374,7 +381,17 @@ ArrayShape parse_array_shape(std::string_view s) {
 std::string to_string(const ArrayShape& s) {
     std::string out = std::to_string(s.width) + "x" + std::to_string(s.height);
     if (s.depth > 1) out += "x" + std::to_string(s.depth);
-    return out + ":" + std::to_string(s.channels);
+    return out + ":" + std::to_string(s.channels) + (s.planar ? "p" : "");
+}
+
+void interleave_planes(ExrImage& img, const ArrayShape& shape) {
+    const std::size_t c = static_cast<std::size_t>(shape.channels);
+    if (!shape.planar || c < 2) return;
+    const std::size_t plane = img.pixels.size() / c;
+    std::vector<double> out(img.pixels.size());
+    for (std::size_t k = 0; k < c; ++k)
+        for (std::size_t i = 0; i < plane; ++i) out[i * c + k] = img.pixels[k * plane + i];
+    img.pixels.swap(out);
 }
 
 std::string resolve_shape(std::vector<long long> dims, long long count, const ArrayShape& given, ArrayShape& shape,

@@ -29,5 +29,8 @@ std::string resolve_shape(std::vector<long long> dims, long long count, const Ar
 // Sizes `img` for `shape` (within image_limits.h) and names its channels;
 // returns an empty string or what is wrong.
 std::string shape_image(ExrImage& img, const ArrayShape& shape);
+// Reorders img.pixels, read in file order, from planes (shape.planar) to
+// interleaved channels; nothing for interleaved shapes.
+void interleave_planes(ExrImage& img, const ArrayShape& shape);
 
 }  // namespace brdflut

@@ -427,6 +427,7 @@ ExrImage read_source_array(const char* data, std::size_t size, const std::string
             throw fail("array '" + want + "': " + why);
         img.pixel = PixelType::float32;
         img.pixels = std::move(values);
+        interleave_planes(img, shape);
         img.printed_step = parser_step;
         return img;
     }

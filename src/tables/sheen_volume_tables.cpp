@@ -13,7 +13,9 @@
 
 #include "brdflut/sheen_volume.h"
 #include "brdflut/zeltner_sheen.h"
+#include "brdflut/ltc_fit.h"
 #include "tables/checks.h"
+#include "tables/ltc_tables.h"
 #include "tables/registry.h"
 #include "tables/shared_results.h"
 
@@ -51,47 +53,59 @@ SheenVolumeOptions options_for(const Resolution& r) {
     return o;
 }
 
-// Solves already made, one an (alpha, resolution): a solve is deterministic,
-// so a kept one is what a fresh one would be. The first caller of a key
-// solves; later callers wait for it.
-class LayerCache {
+// Values already made, one a key (a layer solve, a lobe's doubling): each is
+// deterministic, so a kept one is what a fresh one would be. The first
+// caller of a key makes it; later callers wait for it.
+template <class Value>
+class OnceCache {
 public:
-    std::shared_ptr<const SheenVolumeLayer> get(double alpha, const Resolution& r) {
-        const Key key{tables::key_bits(alpha), static_cast<std::uint64_t>(r.nodes_per_panel * 16 + r.depth_refine)};
+    using Key = std::array<std::uint64_t, 2>;
+    template <class Make>
+    std::shared_ptr<const Value> get(const Key& key, Make&& make) {
         std::shared_ptr<Slot> slot;
         {
             const std::lock_guard<std::mutex> lock(mutex_);
             auto it = slots_.find(key);
             if (it == slots_.end()) {
-                if (slots_.size() >= kMaxSlots) slots_.clear();  // bounded: beyond it, solves are redone
+                if (slots_.size() >= kMaxSlots) slots_.clear();  // bounded: beyond it, values are remade
                 it = slots_.emplace(key, std::make_shared<Slot>()).first;
             }
             slot = it->second;
         }
-        std::call_once(slot->once, [&] { slot->layer = std::make_shared<const SheenVolumeLayer>(alpha, options_for(r)); });
-        return slot->layer;
+        std::call_once(slot->once, [&] { slot->value = make(); });
+        return slot->value;
     }
-    void clear() {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        slots_.clear();
-    }
-    static LayerCache& instance() {
-        static LayerCache cache;
+    static OnceCache& instance() {
+        static OnceCache cache;
         return cache;
     }
 
 private:
-    LayerCache() : id_(tables::register_shared_results([this] { clear(); })) {}
-    using Key = std::array<std::uint64_t, 2>;
+    OnceCache() : id_(tables::register_shared_results([this] { clear(); })) {}
+    void clear() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        slots_.clear();
+    }
     struct Slot {
         std::once_flag once;
-        std::shared_ptr<const SheenVolumeLayer> layer;
+        std::shared_ptr<const Value> value;
     };
     static constexpr std::size_t kMaxSlots = 128;
     std::mutex mutex_;
     std::map<Key, std::shared_ptr<Slot>> slots_;
     std::size_t id_;
 };
+
+std::shared_ptr<const SheenVolumeLayer> layer_at(double alpha, const Resolution& r) {
+    return OnceCache<SheenVolumeLayer>::instance().get(
+        {tables::key_bits(alpha), static_cast<std::uint64_t>(r.nodes_per_panel * 16 + r.depth_refine)},
+        [&] { return std::make_shared<const SheenVolumeLayer>(alpha, options_for(r)); });
+}
+
+std::shared_ptr<const SheenVolumeLobe> lobe_at(double alpha) {
+    return OnceCache<SheenVolumeLobe>::instance().get({tables::key_bits(alpha), 0},
+                                                      [&] { return std::make_shared<const SheenVolumeLobe>(alpha); });
+}
 
 class VolumeEvaluator final : public TexelEvaluator {
 public:
@@ -101,7 +115,7 @@ public:
         TexelValue out;
         const double mu = std::max(c[0], kMinMu), alpha = std::clamp(c[1], kMinAlpha, 1.0);
         try {
-            const std::array<double, 3> r = LayerCache::instance().get(alpha, resolution_)->reflectances(mu);
+            const std::array<double, 3> r = layer_at(alpha, resolution_)->reflectances(mu);
             for (std::size_t k = 0; k < 3; ++k) {
                 out.value[k] = r[k];
                 out.error[k] = resolution_.error;
@@ -185,7 +199,7 @@ ClosedFormCheck refined_grid_check() {
                 const Resolution fine = resolution(Quality::reference);
                 for (const auto& p : std::vector<std::array<double, 2>>{{0.02, 0.5}, {0.6, 1.0}}) {
                     const TexelValue v = e.evaluate(p.data(), 0);
-                    const std::array<double, 3> fine_r = LayerCache::instance().get(p[1], fine)->reflectances(p[0]);
+                    const std::array<double, 3> fine_r = layer_at(p[1], fine)->reflectances(p[0]);
                     for (std::size_t k = 0; k < 2; ++k) {
                         const double err = std::abs(v.value[k] - fine_r[k]);
                         if (!(err <= worst.first))
@@ -194,6 +208,173 @@ ClosedFormCheck refined_grid_check() {
                 }
                 return worst;
             }};
+}
+
+// ---------------------------------------------------------------------------
+// The talk's LTC as Cycles ships it (table_sheen_ltc): the layer's BRDF
+// (SheenVolumeLobe) fitted in the talk's two-parameter form, with the
+// layer's albedo.
+
+constexpr double kLtcNormTolerance = 1e-7;
+constexpr const char* kCyclesSheenSource =
+    "blender/cycles src/scene/shader.tables table_sheen_ltc @97dbe6f57cdf4ede2d2b75ebdda507c8712edb7a (three planes "
+    "A, B, R of [alpha][mu]), from tizian/ltc-sheen fitting/python/fit_ltc_sheen_volume.py "
+    "@92624114a8ffc433389256f79a10332e54ba17f6";
+
+int fit_level(Quality q) { return q == Quality::draft ? 0 : q == Quality::reference ? 2 : 1; }
+
+// The lobe at a texel, its norm known: the single scattering's albedo is the
+// layer's R_ss, the multiple scattering's the interpolant's own integral
+// (no quadrature of f over the hemisphere, which cost most of a fit).
+LtcLobe volume_ltc_lobe(double mu, double alpha) {
+    const std::shared_ptr<const SheenVolumeLobe> lobe = lobe_at(alpha);
+    const Resolution r = resolution(Quality::standard);
+    LtcLobe l(lobe, mu, alpha, ltc_lobe_key("sheen_volume"), kLtcNormTolerance);
+    l.known_n0 = layer_at(alpha, r)->reflectances(l.mu_o)[2] + lobe->multiple_scattering_albedo(l.mu_o);
+    l.known_n0_error = r.error;
+    return l;
+}
+
+LtcFitOptions volume_fit_options(Quality q) {
+    LtcFitOptions o = ltc_fit_options(fit_level(q));
+    o.two_parameter = true;
+    return o;
+}
+
+// Which albedo the LTC's magnitude R is (`--sheen_orders`).
+ModelOption orders_option() {
+    return {"sheen_orders",
+            "albedo of the Zeltner 2022 sheen layer: talk (the talk's random walk cut after 16 scatterings, a walk "
+            "still inside then counted when it points up: what Cycles and Adobe ship) or all (every scattering order, "
+            "the layer's own)",
+            "talk",
+            {"talk", "all"}};
+}
+
+class CyclesLtcEvaluator final : public TexelEvaluator {
+public:
+    explicit CyclesLtcEvaluator(const TableSettings& s)
+        : quality_(s.quality), resolution_(resolution(s.quality)), talk_(tables::param(s, "sheen_orders") == "talk") {}
+
+    TexelValue evaluate(const double* c, std::uint64_t) const override {
+        TexelValue out;
+        const double mu = std::max(c[0], kMinMu), alpha = std::clamp(c[1], kMinAlpha, 1.0);
+        try {
+            const LtcFit fit = fit_ltc(volume_ltc_lobe(mu, alpha), volume_fit_options(quality_));
+            const Mat3 m = fit.minv.matrix();
+            out.value[0] = m.m[0][0] / m.m[2][2];
+            out.value[1] = m.m[0][2] / m.m[2][2];
+            out.value[2] = layer_at(alpha, resolution_)->reflectances(mu)[talk_ ? 1 : 0];
+            out.error[2] = resolution_.error;
+            out.evaluations = fit.evaluations;
+        } catch (const std::exception&) {
+            out.value.fill(std::nan(""));
+            out.error.fill(HUGE_VAL);
+        }
+        return out;
+    }
+
+private:
+    Quality quality_;
+    Resolution resolution_;
+    bool talk_;
+};
+
+AxisSpec talk_axis(AxisSpec a) {
+    a.axis.placement = Placement::endpoints;
+    a.axis.clamp_lo = 0.01;
+    a.axis.clamp_hi = a.axis.max;
+    a.meaning += "; at least 0.01 (the talk's grid: max(0.01, i/31))";
+    return a;
+}
+
+// R (the talk's cut walk, the default) against a solve on finer grids.
+ClosedFormCheck ltc_albedo_check() {
+    return {"R vs a solve at 24 nodes a panel and a twice-refined depth mesh", 2e-5, [](const TexelEvaluator& e) {
+                const Resolution fine = resolution(Quality::reference);
+                return tables::worst_over(e, std::vector<std::array<double, 2>>{{0.05, 0.5}, {0.7, 1.0}}, 2,
+                                          [&](const auto& p) { return layer_at(p[1], fine)->reflectances(p[0])[1]; });
+            }};
+}
+
+// Each stored (A, B) is a local minimum of the two-parameter objective: the
+// largest relative drop of the objective when ln(1/A) or B moves by 1e-3.
+ClosedFormCheck ltc_minimum_check() {
+    return {"(A, B) is a local minimum of the fit's two-parameter objective (largest relative drop)", 1e-6,
+            [](const TexelEvaluator& e) {
+                CheckResult worst{0.0, ""};
+                for (const auto& p : std::vector<std::array<double, 2>>{{0.3, 0.5}, {0.9, 0.5}}) {
+                    const TexelValue v = e.evaluate(p.data(), 0);
+                    LtcFit fit;
+                    fit.params = {0.0, -std::log(v.value[0]), -std::log(v.value[0]), -v.value[1]};
+                    const double drop = std::max(
+                        0.0, ltc_local_minimum_drop(volume_ltc_lobe(p[0], p[1]), fit, volume_fit_options(Quality::standard)));
+                    if (!(drop <= worst.first)) worst = {drop, tables::point_text(p)};
+                }
+                return worst;
+            }};
+}
+
+// The BRDF the fit uses against the layer: its albedo (the generic path's
+// quadrature of f) against R, relative. The multiple scattering is
+// reconstructed from the discrete layer's masses, least accurately near the
+// normal: 0.34 % at cos(theta) = 1, alpha = 0.5.
+ClosedFormCheck ltc_lobe_check() {
+    return {"albedo of the fitted BRDF (generic lobe path) vs the layer's (every order), relative", 0.01,
+            [](const TexelEvaluator&) {
+                CheckResult worst{0.0, ""};
+                for (const auto& p : std::vector<std::array<double, 2>>{{0.3, 0.5}, {1.0, 0.5}, {0.05, 0.5}}) {
+                    GenericOptions opt;
+                    opt.abs_tol = 1e-7;
+                    const double albedo = generic_albedo(*lobe_at(p[1]), p[0], opt).value[0];
+                    // Against the layer's albedo (every order), which the BRDF is.
+                    const double layer = layer_at(p[1], resolution(Quality::standard))->reflectances(p[0])[0];
+                    const double err = std::abs(albedo - layer) / layer;
+                    if (!(err <= worst.first)) worst = {err, tables::point_text(p)};
+                }
+                return worst;
+            }};
+}
+
+TableDefinition cycles_sheen_ltc() {
+    TableDefinition d;
+    d.id = "cycles_sheen_ltc";
+    d.description = "Cycles table_sheen_ltc: Zeltner 2022 sheen LTC of the simulated layer, M^-1 = [[A, 0, B], [0, A, "
+                    "0], [0, 0, 1]], and the layer's albedo R";
+    d.axes = {talk_axis(tables::cos_theta_axis(32)),
+              talk_axis({Axis{"alpha", 0.0, 1.0, 32, Placement::endpoints, Warp::linear}, 0.0, 1.0,
+                         "alpha, the roughness of Zeltner et al. 2022 (SGGX fibre cross-section sigma = alpha^2)"})};
+    d.channels = {"A: aInv, M^-1[0][0] = M^-1[1][1] of the fitted LTC (M^-1[2][2] = 1)", "B: bInv, M^-1[0][2]",
+                  "R: the layer's albedo (--sheen_orders: the talk's cut walk, sheen_volume_albedo R16, by default; "
+                  "every order, R, with all)"};
+    d.options = {orders_option()};
+    d.preset = "cycles";
+    d.engine_source = kCyclesSheenSource;
+    d.supports_monte_carlo = false;
+    d.searched_by_identify = false;  // a fit a texel
+    d.solve_per_parameter = true;  // a layer and a BRDF an alpha
+    d.prepare = [](const TableSettings& s) {
+        PreparedTable p;
+        p.evaluator = std::make_unique<CyclesLtcEvaluator>(s);
+        p.model = volume_model();
+        p.model["preset"] = "cycles";
+        p.model["engine_source"] = kCyclesSheenSource;
+        p.model["albedo"] = tables::param(s, "sheen_orders") == "talk"
+                                ? "R: the talk's random walk cut after 16 scatterings (its expectation)"
+                                : "R: every scattering order";
+        p.model["fit"] =
+            "the layer's BRDF: the exact single scattering (f_ss of the analytic sheen) plus the multiple scattering "
+            "of the discrete layer by doubling, per azimuthal mode (SheenVolumeLobe); fitted by brdflut's LTC fitter "
+            "(ltc_fit.h) in the talk's two-parameter form (no rotation, m22 = m11): Heitz's error measure plus 0.3 "
+            "times the triangular discrimination, by quadrature, no light term";
+        p.model["layout"] = "the talk's and Cycles' grid; Cycles' source array stores the three channels as planes "
+                            "(read it with --shape 32x32:3p)";
+        p.method = volume_method(s.quality);
+        p.method["fit_quality"] = fit_level(s.quality);
+        return p;
+    };
+    d.checks = {ltc_albedo_check(), ltc_minimum_check(), ltc_lobe_check()};
+    return d;
 }
 
 }  // namespace
@@ -213,7 +394,10 @@ void register_sheen_volume_family(FamilyEntries& family) {
          "layer's albedo with every order, the talk's cut walk, and the single scattering; the checks hold the "
          "single scattering to the analytic sheen's f_ss by quadrature over the hemisphere, and the solve to "
          "finer grids. The cut matters: at low roughness and grazing light most of what the layer reflects has "
-         "scattered more than 16 times (docs/engines.md)."});
+         "scattered more than 16 times (docs/engines.md). The layer's BRDF (the exact single scattering and the "
+         "multiple scattering of the discrete layer by doubling, per azimuthal mode) fitted in the talk's "
+         "two-parameter LTC form, with the layer's albedo, is cycles_sheen_ltc, in Cycles' layout (the cycles "
+         "preset)."});
     TableDefinition d;
     d.id = "sheen_volume_albedo";
     d.description = "Zeltner 2022 sheen layer (simulated): albedo R, the talk's 16-scattering walk R16, and R_ss";
@@ -227,6 +411,7 @@ void register_sheen_volume_family(FamilyEntries& family) {
                   "R_ss: the single-scattering part"};
     d.supports_monte_carlo = false;  // the random walk is a test (tests/test_sheen_volume.cpp)
     d.searched_by_identify = false;  // a solve an alpha: seconds
+    d.solve_per_parameter = true;
     d.prepare = [](const TableSettings& s) {
         PreparedTable p;
         p.evaluator = std::make_unique<VolumeEvaluator>(s);
@@ -236,6 +421,7 @@ void register_sheen_volume_family(FamilyEntries& family) {
     };
     d.checks = {single_scattering_check(), refined_grid_check()};
     family.tables.push_back(std::move(d));
+    family.tables.push_back(cycles_sheen_ltc());
 }
 
 }  // namespace brdflut

@@ -5,7 +5,8 @@
 //
 // The first input byte picks the read options, the rest is the file:
 //   bits 0-1: decode none, linear, srgb, or (3) read as a source file with
-//             --array lut; bit 2: a given shape (4x4:1, or 2x2x2:2 with bit 3);
+//             --array lut; bit 2: a given shape (4x4:1, or 2x2x2:2 with bit 3,
+//             its channels stored as planes, 2x2x2:2p, with bit 5 too);
 //             bit 4 (with bits 0-1 at 0): decode rgbd.
 // The seeds in tests/fuzz/corpus carry that byte: 0x00 for binary files
 // (the integer encodings among them: unorm8, unorm16, rgb10a2, rgbd with its
@@ -30,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (pick & 16) opt.decode = brdflut::Decode::rgbd;
             break;
     }
-    if (pick & 4) opt.shape = (pick & 8) ? brdflut::ArrayShape{2, 2, 2, 2} : brdflut::ArrayShape{4, 4, 1, 1};
+    if (pick & 4)
+        opt.shape = (pick & 8) ? brdflut::ArrayShape{2, 2, 2, 2, (pick & 32) != 0} : brdflut::ArrayShape{4, 4, 1, 1};
     try {
         const brdflut::ExrImage img =
             brdflut::read_table_image_memory(reinterpret_cast<const char*>(data + 1), size - 1, "input", opt);
