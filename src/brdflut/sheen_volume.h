@@ -20,18 +20,20 @@
 // only the azimuthal average of the phase function, which has a closed form
 // (fibre_phase_azimuthal). With it the transport is one-dimensional in
 // depth and in the direction cosine nu:
-//  - nu: Gauss-Legendre nodes on each hemisphere; the scattering integral
-//    over nu is product integration against the local cubic interpolant of
-//    the unknown between the nodes (exact for a cubic whatever the width of
-//    the phase function's peak, which is about sigma wide);
-//  - depth: the unknown linear between the nodes of a mesh graded
+//  - nu: Gauss-Legendre panels on each hemisphere, graded towards the
+//    horizon; the scattering integral over nu is product integration
+//    against the local cubic interpolant of the unknown between the nodes
+//    (exact for a cubic whatever the width of the phase function's peak,
+//    which is about sigma wide);
+//  - depth: the unknown cubic between the nodes of a mesh graded
 //    geometrically towards both faces, the exponential transport along each
 //    direction integrated exactly against it;
 //  - orders: the adjoint (the probability that light leaving a scattering at
-//    depth z in direction nu reaches the top) is built order by order; for
-//    the layer's albedo the scattering that keeps a direction is summed in
-//    closed form (it only lowers the extinction) and the orders run until
-//    they add less than 1e-15.
+//    depth z in direction nu reaches the top). The talk's cut walk is built
+//    order by order. For every order the scattering that keeps a direction
+//    is summed in closed form (it only lowers the extinction) and the rest
+//    solved by BiCGSTAB to a residual of 1e-14 (summed order by order it
+//    took 7,000 orders at alpha = 0.01, as light creeps between directions).
 // One solve serves every mu of one alpha.
 #pragma once
 

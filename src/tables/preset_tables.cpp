@@ -691,8 +691,9 @@ std::vector<PresetDeclaration> declare() {
     all.push_back(
         {{"cycles",
           "Blender Cycles' table_ggx_E (32x32, x = sqrt(alpha), y = mu, end points), table_ggx_Eavg, the "
-          "four rough glass tables (16^3 and 16^2, z = sqrt((n-1)/(n+1))) and the two generalized-Schlick "
-          "tables (16^3, fresnel_moment_tables.cpp)",
+          "four rough glass tables (16^3 and 16^2, z = sqrt((n-1)/(n+1))), the two generalized-Schlick "
+          "tables (16^3, fresnel_moment_tables.cpp) and Zeltner's sheen LTC (32x32, three channels, "
+          "sheen_volume_tables.cpp)",
           PixelType::float32},
          {{"cycles_ggx_e", "Cycles table_ggx_E: GGX albedo E, x = sqrt(alpha), rows mu, end points", cycles_source,
            {cycles_rough(32), cycles_mu(32)},

@@ -45,11 +45,14 @@ Resolution resolution(Quality q) {
     }
 }
 
-SheenVolumeOptions options_for(const Resolution& r) {
+// every_order: the layer's own albedo too (a BiCGSTAB solve, most of the
+// cost); without it, the single scattering and the talk's cut walk only.
+SheenVolumeOptions options_for(const Resolution& r, bool every_order) {
     SheenVolumeOptions o;
     o.nodes_per_panel = r.nodes_per_panel;
     o.depth_refine = r.depth_refine;
     o.cut_after = kTalkBounces;
+    o.every_order = every_order;
     return o;
 }
 
@@ -96,10 +99,11 @@ private:
     std::size_t id_;
 };
 
-std::shared_ptr<const SheenVolumeLayer> layer_at(double alpha, const Resolution& r) {
+std::shared_ptr<const SheenVolumeLayer> layer_at(double alpha, const Resolution& r, bool every_order = true) {
     return OnceCache<SheenVolumeLayer>::instance().get(
-        {tables::key_bits(alpha), static_cast<std::uint64_t>(r.nodes_per_panel * 16 + r.depth_refine)},
-        [&] { return std::make_shared<const SheenVolumeLayer>(alpha, options_for(r)); });
+        {tables::key_bits(alpha),
+         static_cast<std::uint64_t>((r.nodes_per_panel * 16 + r.depth_refine) * 2 + (every_order ? 1 : 0))},
+        [&] { return std::make_shared<const SheenVolumeLayer>(alpha, options_for(r, every_order)); });
 }
 
 std::shared_ptr<const SheenVolumeLobe> lobe_at(double alpha) {
@@ -230,7 +234,7 @@ LtcLobe volume_ltc_lobe(double mu, double alpha) {
     const std::shared_ptr<const SheenVolumeLobe> lobe = lobe_at(alpha);
     const Resolution r = resolution(Quality::standard);
     LtcLobe l(lobe, mu, alpha, ltc_lobe_key("sheen_volume"), kLtcNormTolerance);
-    l.known_n0 = layer_at(alpha, r)->reflectances(l.mu_o)[2] + lobe->multiple_scattering_albedo(l.mu_o);
+    l.known_n0 = layer_at(alpha, r, false)->reflectances(l.mu_o)[2] + lobe->multiple_scattering_albedo(l.mu_o);
     l.known_n0_error = r.error;
     return l;
 }
@@ -264,7 +268,8 @@ public:
             const Mat3 m = fit.minv.matrix();
             out.value[0] = m.m[0][0] / m.m[2][2];
             out.value[1] = m.m[0][2] / m.m[2][2];
-            out.value[2] = layer_at(alpha, resolution_)->reflectances(mu)[talk_ ? 1 : 0];
+            out.value[2] = talk_ ? layer_at(alpha, resolution_, false)->reflectances(mu)[1]
+                                 : layer_at(alpha, resolution_)->reflectances(mu)[0];
             out.error[2] = resolution_.error;
             out.evaluations = fit.evaluations;
         } catch (const std::exception&) {
@@ -293,7 +298,7 @@ ClosedFormCheck ltc_albedo_check() {
     return {"R vs a solve at 24 nodes a panel and a twice-refined depth mesh", 2e-5, [](const TexelEvaluator& e) {
                 const Resolution fine = resolution(Quality::reference);
                 return tables::worst_over(e, std::vector<std::array<double, 2>>{{0.05, 0.5}, {0.7, 1.0}}, 2,
-                                          [&](const auto& p) { return layer_at(p[1], fine)->reflectances(p[0])[1]; });
+                                          [&](const auto& p) { return layer_at(p[1], fine, false)->reflectances(p[0])[1]; });
             }};
 }
 
@@ -396,8 +401,8 @@ void register_sheen_volume_family(FamilyEntries& family) {
          "finer grids. The cut matters: at low roughness and grazing light most of what the layer reflects has "
          "scattered more than 16 times (docs/engines.md). The layer's BRDF (the exact single scattering and the "
          "multiple scattering of the discrete layer by doubling, per azimuthal mode) fitted in the talk's "
-         "two-parameter LTC form, with the layer's albedo, is cycles_sheen_ltc, in Cycles' layout (the cycles "
-         "preset)."});
+         "two-parameter LTC form, with the albedo of the talk's walk (or the layer's, --sheen_orders all), is "
+         "cycles_sheen_ltc, in Cycles' layout (the cycles preset)."});
     TableDefinition d;
     d.id = "sheen_volume_albedo";
     d.description = "Zeltner 2022 sheen layer (simulated): albedo R, the talk's 16-scattering walk R16, and R_ss";
