@@ -206,6 +206,26 @@ TEST(SheenVolume, LayerBrdfIsReciprocalAndCarriesTheLayersAlbedo) {
     }
 }
 
+// cycles_sheen_ltc's R is the cut walk by default and the layer's own with
+// --sheen_orders all (sheen_volume_albedo's R16 and R); A and B do not move.
+TEST(SheenVolume, CyclesLtcMagnitudeFollowsSheenOrders) {
+    const TableDefinition& def = find_table("cycles_sheen_ltc");
+    TableSettings talk = default_settings(def), all = talk;
+    all.params["sheen_orders"] = "all";
+    const PreparedTable pt = def.prepare(talk), pa = def.prepare(all);
+    const double coords[2] = {0.01, 1.0 / 31.0};
+    const TexelValue vt = pt.evaluator->evaluate(coords, 0), va = pa.evaluator->evaluate(coords, 0);
+    SheenVolumeOptions o;
+    o.cut_after = 16;
+    const std::array<double, 3> r = SheenVolumeLayer(1.0 / 31.0, o).reflectances(0.01);
+    EXPECT_NEAR(vt.value[2], r[1], 1e-12);
+    EXPECT_NEAR(va.value[2], r[0], 1e-12);
+    EXPECT_GT(va.value[2], 4.5 * vt.value[2]);
+    EXPECT_EQ(vt.value[0], va.value[0]);
+    EXPECT_EQ(vt.value[1], va.value[1]);
+    EXPECT_NE(pt.model.dump(), pa.model.dump());
+}
+
 TEST(SheenVolume, RefusesValuesOutsideTheirRange) {
     EXPECT_THROW(SheenVolumeLayer(0.0), Error);
     EXPECT_THROW(SheenVolumeLayer(1.5), Error);

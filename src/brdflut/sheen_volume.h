@@ -129,21 +129,11 @@ class SheenVolumeLobe final : public GenericLobe {
 public:
     explicit SheenVolumeLobe(double alpha, const SheenVolumeBrdfOptions& options = {});
     double f(const Vec3& wo, const Vec3& wi) const override;
-    // The multiple-scattering part at cosines mu_o, mu_i and the azimuth phi
-    // between wo and wi (0: wo and wi on the same side, as retro-reflection).
-    double multiple_scattering(double mu_o, double mu_i, double phi) const;
-    // Azimuthal moment m of the multiple scattering (f_ms = sum over m of
-    // moment_m cos(m phi), m >= 0).
-    double multiple_scattering_moment(int m, double mu_o, double mu_i) const;
-    // Its albedo at mu_o: 2 pi * integral of moment_0(mu_o, mu_i) mu_i dmu_i,
+    // The multiple scattering's albedo at mu_o: 2 pi * integral of its
+    // azimuthal mean over mu_i times mu_i,
     // exact for the interpolant (the lobe's albedo is this plus the single
     // scattering's, which is the layer's R_ss).
     double multiple_scattering_albedo(double mu_o) const;
-    // The discrete layer's albedo for light arriving along node k (every
-    // order), and that node's cosine: a second route to SheenVolumeLayer.
-    double node_albedo(int k) const;
-    double node(int k) const { return nodes_[static_cast<std::size_t>(k)]; }
-    int node_count() const { return static_cast<int>(nodes_.size()); }
     bool has_sampler() const override { return true; }
     LobeSample sample(const Vec3& wo, double u1, double u2) const override { return single_.sample(wo, u1, u2); }
 
@@ -154,7 +144,6 @@ private:
     // Per mode, [out][in] over nodes: the multiple scattering's moment at
     // the node pair.
     std::vector<std::vector<double>> moments_;
-    std::vector<double> albedo_;
 };
 
 // The talk's random walk, as an independent route: the fraction of `paths`

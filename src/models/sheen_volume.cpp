@@ -679,11 +679,6 @@ SheenVolumeLobe::SheenVolumeLobe(double alpha, const SheenVolumeBrdfOptions& o) 
             multiply(T, Z, tmp, n);
             T.swap(tmp);
         }
-        if (m == 0) {
-            albedo_.assign(n, 0.0);
-            for (std::size_t j = 0; j < n; ++j)
-                for (std::size_t l = 0; l < n; ++l) albedo_[j] += R[l * n + j];
-        }
         // Less the discrete single scattering of the whole layer; the exit
         // density over the cosine (G^-1 of the masses) over cos(theta_o):
         // the BRDF's moment. The moments are over the azimuth between the
@@ -714,17 +709,6 @@ double SheenVolumeLobe::interpolate(const std::vector<double>& table, double mu_
     double sum = 0.0;
     for (std::size_t a = 0; a < 4; ++a)
         for (std::size_t b = 0; b < 4; ++b) sum += wo[a] * wi[b] * table[(so + a) * n + si + b];
-    return sum;
-}
-
-double SheenVolumeLobe::multiple_scattering_moment(int m, double mu_o, double mu_i) const {
-    return interpolate(moments_[static_cast<std::size_t>(m)], mu_o, mu_i);
-}
-
-double SheenVolumeLobe::multiple_scattering(double mu_o, double mu_i, double phi) const {
-    double sum = 0.0;
-    for (std::size_t m = 0; m < moments_.size(); ++m)
-        sum += interpolate(moments_[m], mu_o, mu_i) * std::cos(static_cast<double>(m) * phi);
     return sum;
 }
 
@@ -763,6 +747,5 @@ double SheenVolumeLobe::multiple_scattering_albedo(double mu_o) const {
     return kTwoPi * sum;
 }
 
-double SheenVolumeLobe::node_albedo(int k) const { return albedo_[static_cast<std::size_t>(k)]; }
 
 }  // namespace brdflut
