@@ -124,18 +124,20 @@ TEST(Generate, SameBytesForAnyThreadCount) {
 TEST(Quality, IsRecordedAndSetsTheToleranceAndDraftEstimatesAreHonest) {
     // Every table with a tolerance, engine presets included: one that ignored
     // --quality would record the same tolerance at every quality.
+    // Three texels per axis, the middle one included.
     int checked = 0;
     for (const TableDefinition& def : catalogue()) {
         const std::string id = def.id;
-        if (!generate(def, small(id, 2)).method.contains("abs_tolerance")) continue;  // closed forms
-        ++checked;
         std::map<Quality, Table> t;
         for (Quality q : {Quality::draft, Quality::standard, Quality::reference}) {
-            TableSettings s = small(id, 4);
+            TableSettings s = small(id, 3);
             s.quality = q;
-            t.emplace(q, generate(find_table(id), s));
+            t.emplace(q, generate(def, s));
             EXPECT_EQ(t.at(q).method.at("quality"), std::string(to_string(q))) << id;
+            if (!t.at(q).method.contains("abs_tolerance")) break;  // a closed form
         }
+        if (t.size() < 3) continue;
+        ++checked;
         const double draft = t.at(Quality::draft).method.at("abs_tolerance");
         const double standard = t.at(Quality::standard).method.at("abs_tolerance");
         const double reference = t.at(Quality::reference).method.at("abs_tolerance");

@@ -57,6 +57,10 @@ public:
     CharlieLobe(double alpha, SheenShadowing shadowing) : charlie_{alpha}, shadowing_(shadowing) {}
     double f(const Vec3& wo, const Vec3& wi) const override;
     LobeHints hints(const Vec3& wo) const override;
+    // Lambda(mu_o) is pieced together at mu_o = 1/2 (Estevez-Kulla).
+    std::vector<double> view_kinks() const override {
+        return shadowing_ == SheenShadowing::neubelt ? std::vector<double>{} : std::vector<double>{0.5};
+    }
     // An equal mixture of the cosine-weighted hemisphere and the reflection
     // of normals drawn from D cos(theta_m) (sheen.h's sampler).
     bool has_sampler() const override { return true; }

@@ -140,6 +140,10 @@ public:
     // (wi.z < 0 for a transmission lobe: the BTDF).
     virtual double f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual LobeHints hints(const Vec3& /*wo*/) const { return {}; }
+    // View cosines in (0, 1) where the moments, as functions of mu_o, have a
+    // kink (a jump in a low derivative, e.g. where a shadowing term of wo is
+    // pieced together): the average over the view splits its range there.
+    virtual std::vector<double> view_kinks() const { return {}; }
     // An importance sampler (optional): its density must be positive
     // wherever f is, so that the Monte Carlo estimate is unbiased.
     virtual bool has_sampler() const { return false; }
@@ -242,8 +246,9 @@ Estimate<N> generic_moments(const GenericLobe& lobe, double mu_o, const std::arr
 Estimate<1> generic_albedo(const GenericLobe& lobe, double mu_o, const GenericOptions& opt = {});
 // 2 * integral over mu in [0, 1] of M_k(mu) mu dmu, adaptive Gauss-Kronrod
 // over mu (the view cosines below the lobe's width at normal view in
-// mu = b u^2, above in ln(mu)), each M_k(mu) to the tolerance its weight
-// needs; the error adds the outer estimate and the integrated inner ones.
+// mu = b u^2, above in ln(mu); both ranges split at the lobe's view_kinks),
+// each M_k(mu) to the tolerance its weight needs; the error adds the outer
+// estimate and the integrated inner ones.
 template <std::size_t N>
 Estimate<N> generic_moment_average(const GenericLobe& lobe, const std::array<MomentWeight, N>& weights,
                                    const GenericOptions& opt = {});

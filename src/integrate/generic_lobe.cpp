@@ -490,16 +490,36 @@ Estimate<kMaxWeights> average_core(const GenericLobe& lobe, const MomentWeight* 
             out.error[k] += e.error[k] + e.value[kMaxWeights];
         }
     };
-    accumulate(integrate_adaptive<kMaxWeights + 1>([&](double u) { return integrand(b * u * u, 2.0 * b * u); }, 0.0,
-                                                   1.0, aopt));
+    // Break points: b, then the lobe's view kinks; each piece gets the share
+    // of its range's tolerance that its length is of the range.
+    std::vector<double> breaks;
+    for (double k : lobe.view_kinks())
+        if (k > 0.0 && k < 1.0 && k != b) breaks.push_back(k);
+    std::sort(breaks.begin(), breaks.end());
+    std::vector<double> low = {0.0}, high;  // u = sqrt(mu / b) on [0, 1]; ln(mu) on [ln b, 0]
+    for (double k : breaks) (k < b ? low : high).push_back(k < b ? std::sqrt(k / b) : std::log(k));
+    low.push_back(1.0);
+    for (std::size_t i = 0; i + 1 < low.size(); ++i) {
+        AdaptiveOptions piece = aopt;
+        piece.abs_tol = aopt.abs_tol * (low[i + 1] - low[i]);
+        accumulate(integrate_adaptive<kMaxWeights + 1>([&](double u) { return integrand(b * u * u, 2.0 * b * u); },
+                                                       low[i], low[i + 1], piece));
+    }
     if (b < 1.0) {
         span = -std::log(b);
-        accumulate(integrate_adaptive_panels<kMaxWeights + 1>(
-            [&](double v) {
-                const double mu = std::exp(v);
-                return integrand(mu, mu);
-            },
-            std::log(b), 0.0, static_cast<int>(std::ceil(span / kLnMuPanelWidth)), aopt));
+        high.insert(high.begin(), std::log(b));
+        high.push_back(0.0);
+        for (std::size_t i = 0; i + 1 < high.size(); ++i) {
+            const double length = high[i + 1] - high[i];
+            AdaptiveOptions piece = aopt;
+            piece.abs_tol = aopt.abs_tol * length / span;
+            accumulate(integrate_adaptive_panels<kMaxWeights + 1>(
+                [&](double v) {
+                    const double mu = std::exp(v);
+                    return integrand(mu, mu);
+                },
+                high[i], high[i + 1], static_cast<int>(std::ceil(length / kLnMuPanelWidth)), piece));
+        }
     }
     return out;
 }

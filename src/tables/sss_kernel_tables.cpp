@@ -6,7 +6,10 @@
 // Burley transmission profile of Unreal's subsurface profile rows.
 #include <cmath>
 #include <limits>
+#include <functional>
 #include <memory>
+#include <mutex>
+#include <optional>
 
 #include "brdflut/burley.h"
 #include "brdflut/error.h"
@@ -30,18 +33,39 @@ struct Tap {
     std::array<double, 3> weight, error;
 };
 
+// A kernel's taps, made by the first caller (thread-safe).
+class LazyTaps {
+public:
+    explicit LazyTaps(std::function<std::vector<Tap>()> make) : make_(std::move(make)) {}
+    const std::vector<Tap>& get() const {
+        std::call_once(once_, [this] { taps_ = make_(); });
+        return taps_;
+    }
+
+private:
+    std::function<std::vector<Tap>()> make_;
+    mutable std::once_flag once_;
+    mutable std::vector<Tap> taps_;
+};
+
 class KernelEvaluator final : public TexelEvaluator {
 public:
     // index_scale: the coordinate times this is the tap's index.
-    KernelEvaluator(std::vector<Tap> taps, double index_scale) : taps_(std::move(taps)), scale_(index_scale) {}
+    KernelEvaluator(std::vector<Tap> taps, double index_scale)
+        : taps_([t = std::move(taps)] { return t; }), scale_(index_scale) {}
+    // The taps made on the first evaluation (a description of the table,
+    // `brdflut docs` for example, does not need them).
+    KernelEvaluator(std::function<std::vector<Tap>()> make_taps, double index_scale)
+        : taps_(std::move(make_taps)), scale_(index_scale) {}
     TexelValue evaluate(const double* c, std::uint64_t) const override {
         TexelValue out;
+        const std::vector<Tap>& taps = taps_.get();
         const double x = std::round(c[0] * scale_);
-        if (!(x >= 0.0) || x >= static_cast<double>(taps_.size())) {
+        if (!(x >= 0.0) || x >= static_cast<double>(taps.size())) {
             out.value.fill(NAN);
             return out;
         }
-        const Tap& t = taps_[static_cast<std::size_t>(x)];
+        const Tap& t = taps[static_cast<std::size_t>(x)];
         for (std::size_t k = 0; k < 3; ++k) {
             out.value[k] = t.weight[k];
             out.error[k] = t.error[k];
@@ -51,7 +75,7 @@ public:
     }
 
 private:
-    std::vector<Tap> taps_;
+    LazyTaps taps_;
     double scale_;
 };
 
@@ -159,10 +183,17 @@ TableDefinition profile_kernel_table(std::string id, std::string description,
         const KernelSettings k = kernel_settings(s);
         const SkinProfile p = profile(s);
         const double tol = kTolerances.at(s.quality);
-        const SeparableKernel kernel =
-            separable_kernel(p, k.shape, k.weights, separable_tap_offsets(k.taps, k.radius, k.spacing), tol);
+        // The kernel is made when the first texel asks for it, and its
+        // separable error once every texel is filled.
+        auto kernel = std::make_shared<std::optional<SeparableKernel>>();
+        auto make = [kernel, p, k, tol]() -> const SeparableKernel& {
+            if (!*kernel)
+                *kernel = separable_kernel(p, k.shape, k.weights, separable_tap_offsets(k.taps, k.radius, k.spacing),
+                                           tol);
+            return **kernel;
+        };
         PreparedTable out;
-        out.evaluator = std::make_unique<KernelEvaluator>(taps_of(kernel), k.taps - 1);
+        out.evaluator = std::make_unique<KernelEvaluator>([make] { return taps_of(make()); }, k.taps - 1);
         out.model = model(s);
         out.model["kernel"] = to_string(k.shape);
         out.model["weights"] = to_string(k.weights);
@@ -170,8 +201,10 @@ TableDefinition profile_kernel_table(std::string id, std::string description,
         out.model["radius_mm"] = k.radius;
         out.model["spacing"] = k.spacing;
         out.method = tables::quadrature_method(kRule, tol);
-        out.method["separable_error"] = error_json(separable_error(p, kernel, tol), k.taps, k.radius);
-        out.method["separable_error"]["meaning"] = kSeparableErrorMeaning;
+        out.finish = [make, p, k, tol](Table& t) {
+            t.method["separable_error"] = error_json(separable_error(p, make(), tol), k.taps, k.radius);
+            t.method["separable_error"]["meaning"] = kSeparableErrorMeaning;
+        };
         return out;
     };
     return d;
