@@ -52,9 +52,22 @@ double estevez_kulla_lambda(double mu, double alpha);
 // Lambda of the light direction: Lambda(mu)^(1 + 2 (1 - mu)^8) when soft.
 double estevez_kulla_lambda_light(double mu, double alpha, bool soft);
 
+// The fit at one alpha, its coefficients and L(1/2) computed once: the same
+// values as the functions above, bit for bit.
+class EstevezKullaFit {
+public:
+    explicit EstevezKullaFit(double alpha);
+    double L(double x) const;
+    double lambda(double mu) const;
+    double lambda_light(double mu, bool soft) const;
+
+private:
+    double a_, b_, c_, d_, e_, l_half_;
+};
+
 class CharlieLobe final : public GenericLobe {
 public:
-    CharlieLobe(double alpha, SheenShadowing shadowing) : charlie_{alpha}, shadowing_(shadowing) {}
+    CharlieLobe(double alpha, SheenShadowing shadowing) : charlie_{alpha}, shadowing_(shadowing), fit_(alpha) {}
     double f(const Vec3& wo, const Vec3& wi) const override;
     LobeHints hints(const Vec3& wo) const override;
     // Lambda(mu_o) is pieced together at mu_o = 1/2 (Estevez-Kulla).
@@ -71,6 +84,7 @@ public:
 private:
     Charlie charlie_;
     SheenShadowing shadowing_;
+    EstevezKullaFit fit_;
 };
 
 // HDRP's fabric Lambert: f = (1 - alpha/2) / pi (HDRP's FabricLambert, an

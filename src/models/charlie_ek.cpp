@@ -22,24 +22,36 @@ SheenShadowing sheen_shadowing_from_string(const std::string& name) {
     throw Error("unknown sheen shadowing '" + name + "'; allowed: estevez_kulla, estevez_kulla_soft, neubelt");
 }
 
-double estevez_kulla_L(double x, double alpha) {
-    const double t = sqr(1.0 - clamp01(alpha));  // weight of the alpha = 0 fit
+EstevezKullaFit::EstevezKullaFit(double alpha) {
+    const double t = sqr(1.0 - clamp01(alpha));
     const auto fit = [t](double at_one, double at_zero) { return at_one + (at_zero - at_one) * t; };
-    const double a = fit(21.5473, 25.3245), b = fit(3.82987, 3.32435), c = fit(0.19823, 0.16801),
-                 d = fit(-1.97760, -1.27393), e = fit(-4.32054, -4.85967);
-    return a / (1.0 + b * std::pow(std::max(x, 0.0), c)) + d * x + e;
+    a_ = fit(21.5473, 25.3245);
+    b_ = fit(3.82987, 3.32435);
+    c_ = fit(0.19823, 0.16801);
+    d_ = fit(-1.97760, -1.27393);
+    e_ = fit(-4.32054, -4.85967);
+    l_half_ = L(0.5);
 }
 
-double estevez_kulla_lambda(double mu, double alpha) {
-    return mu < 0.5 ? std::exp(estevez_kulla_L(mu, alpha))
-                    : std::exp(2.0 * estevez_kulla_L(0.5, alpha) - estevez_kulla_L(1.0 - mu, alpha));
+double EstevezKullaFit::L(double x) const { return a_ / (1.0 + b_ * std::pow(std::max(x, 0.0), c_)) + d_ * x + e_; }
+
+double EstevezKullaFit::lambda(double mu) const {
+    return mu < 0.5 ? std::exp(L(mu)) : std::exp(2.0 * l_half_ - L(1.0 - mu));
 }
 
-double estevez_kulla_lambda_light(double mu, double alpha, bool soft) {
-    const double lambda = estevez_kulla_lambda(mu, alpha);
+double EstevezKullaFit::lambda_light(double mu, bool soft) const {
+    const double lambda = this->lambda(mu);
     if (!soft) return lambda;
     const double s2 = sqr(1.0 - mu), s8 = sqr(sqr(s2));
     return std::pow(lambda, 1.0 + 2.0 * s8);
+}
+
+double estevez_kulla_L(double x, double alpha) { return EstevezKullaFit(alpha).L(x); }
+
+double estevez_kulla_lambda(double mu, double alpha) { return EstevezKullaFit(alpha).lambda(mu); }
+
+double estevez_kulla_lambda_light(double mu, double alpha, bool soft) {
+    return EstevezKullaFit(alpha).lambda_light(mu, soft);
 }
 
 double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
@@ -49,9 +61,15 @@ double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (!(len > 0.0)) return 0.0;
     const double d = charlie_.D(s.z / len);
     if (shadowing_ == SheenShadowing::neubelt) return d * neubelt_visibility(wo.z, wi.z);
-    const double a = charlie_.alpha;
-    const double g = 1.0 / (1.0 + estevez_kulla_lambda(wo.z, a) +
-                            estevez_kulla_lambda_light(wi.z, a, shadowing_ == SheenShadowing::estevez_kulla_soft));
+    // The generic path asks for many wi at one wo: Lambda(mu_o) of the last
+    // (alpha, mu_o) this thread asked for is kept (a pure function of both).
+    struct LastView {
+        double alpha = -1.0, mu = -1.0, lambda = 0.0;
+    };
+    thread_local LastView last;
+    if (last.alpha != charlie_.alpha || last.mu != wo.z) last = {charlie_.alpha, wo.z, fit_.lambda(wo.z)};
+    const double g =
+        1.0 / (1.0 + last.lambda + fit_.lambda_light(wi.z, shadowing_ == SheenShadowing::estevez_kulla_soft));
     return d * g / (4.0 * wo.z * wi.z);
 }
 
