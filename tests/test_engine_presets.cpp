@@ -26,6 +26,7 @@
 #include "brdflut/random.h"
 #include "brdflut/sheen_integrals.h"
 #include "tables/recipe.h"
+#include "tables/sheen_charlie_check.h"
 #include "test_support.h"
 
 using namespace brdflut;
@@ -248,6 +249,25 @@ TEST(EnginePresets, OslBsdlDielectricTablesHoldOneMinusTheGlassEnergyOnBsdlsGrid
             EXPECT_NEAR(t.at(texel, 0), 1.0 - (e.value[0] + e.value[1]), 2e-7) << id << " " << c << "," << r << "," << f;
         }
     }
+}
+
+// BSDL's ContyKullaSheen table (genluts.cpp, data[r][c]): 1 - E of Charlie
+// with the softened Estevez-Kulla G2 at cos = max(c/15, 1e-6) and alpha =
+// clamp(r/15, 0.06, 1), cosines fastest; against the half-vector rule.
+TEST(EnginePresets, OslBsdlSheenHoldsOneMinusTheSoftenedCharlieAlbedo) {
+    const TableDefinition& def = find_table("osl_bsdl_sheen");
+    ASSERT_EQ(def.axes.size(), 2u);
+    const Table t = generate(def, default_settings(def));
+    ASSERT_EQ(t.texel_count(), 256u);
+    for (const auto& [c, r] : std::vector<std::array<int, 2>>{{1, 0}, {15, 15}, {7, 3}, {3, 12}, {11, 1}}) {
+        const double mu = c / 15.0, alpha = std::clamp(r / 15.0, 0.06, 1.0);
+        const double e = tables::charlie_moments_by_half_vector(mu, alpha, SheenShadowing::estevez_kulla_soft)[0];
+        EXPECT_NEAR(t.at(at2(c, r, 16), 0), 1.0 - e, 2e-7) << c << "," << r;
+    }
+    // The softened G2 is the one tabulated: the unsoftened lobe's 1 - E is
+    // far from it.
+    const double hard = 1.0 - tables::charlie_moments_by_half_vector(7.0 / 15.0, 0.2, SheenShadowing::estevez_kulla)[0];
+    EXPECT_GT(std::abs(t.at(at2(7, 3, 16), 0) - hard), 1e-3);
 }
 
 // Mitsuba 3's roughplastic transmittance: 64 end points in mu clamped at

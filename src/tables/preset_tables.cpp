@@ -80,6 +80,19 @@ AxisSpec bsdl_roughness(int count) {
     return a;
 }
 
+// BSDL's Conty-Kulla sheen table (MTX/bsdf_sheen_decl.h, genluts.cpp): rows
+// rough = j/15 at end points, the lobe's alpha = clamp(rough, 0.06, 1)
+// (ContyKullaDist); columns cos = max(i/15, 1e-6).
+AxisSpec bsdl_sheen_alpha(int count) {
+    AxisSpec a = tables::alpha_axis(count);
+    a.axis.placement = Placement::endpoints;
+    a.axis.warp = Warp::linear;
+    a.axis.clamp_lo = 0.06;
+    a.axis.clamp_hi = 1.0;
+    a.meaning = "Charlie alpha = clamp(rough, 0.06, 1), rough = j/15 (BSDL's ContyKullaDist)";
+    return a;
+}
+
 // BSDL's dielectric tables (SPI/bsdf_dielectric_decl.h, genluts.cpp): cos =
 // max(i/15, 1e-6), linear; the index eta = 1.001 + 3.999 t^2 over t = f/31.
 AxisSpec bsdl_linear_cos(int count) { return clamped_low(cos_theta(count, Placement::endpoints), 1e-6); }
@@ -264,10 +277,11 @@ ClosedFormCheck one_minus_albedo_at_alpha_one() {
 }
 
 // A channel of a Charlie moments table against the half-vector rule
-// (sheen_charlie_check.h): E (moment 0), F (1) or E/(1 + E) (2), axes
-// (cos_theta, roughness r with alpha = r^2) or, when `alpha_axis`, (cos_theta, alpha).
+// (sheen_charlie_check.h): E (moment 0), F (1), E/(1 + E) (2) or 1 - E (3),
+// axes (cos_theta, roughness r with alpha = r^2) or, when `alpha_axis`,
+// (cos_theta, alpha).
 ClosedFormCheck charlie_moment(int c, int moment, SheenShadowing s, bool alpha_axis) {
-    const char* what = moment == 0 ? "E" : moment == 1 ? "F (Fresnel moment)" : "E/(1 + E)";
+    const char* what = moment == 0 ? "E" : moment == 1 ? "F (Fresnel moment)" : moment == 2 ? "E/(1 + E)" : "1 - E";
     return {std::string(what) + " vs a nested Gauss-Kronrod rule over the half vector (" + to_string(s) + ")",
             1e-8 + 1e-10, [c, moment, s, alpha_axis](const TexelEvaluator& e) {
                 // Beside a coarse grid, a patch at roughness 0.75 to 0.9 (alpha 0.56 to
@@ -279,7 +293,7 @@ ClosedFormCheck charlie_moment(int c, int moment, SheenShadowing s, bool alpha_a
                 return worst_over(e, pts, c, [&](const auto& p) {
                     const double alpha = alpha_axis ? p[1] : p[1] * p[1];
                     const auto r = charlie_moments_by_half_vector(p[0], alpha, s);
-                    return moment == 2 ? r[0] / (1.0 + r[0]) : r[static_cast<std::size_t>(moment)];
+                    return moment == 2 ? r[0] / (1.0 + r[0]) : moment == 3 ? 1.0 - r[0] : r[static_cast<std::size_t>(moment)];
                 });
             }};
 }
@@ -567,6 +581,14 @@ std::vector<PresetDeclaration> declare() {
     bsdl_glass_model.erase("side");
     bsdl_glass_model["side"] = "front: eta = n; back: eta = 1/n";
     bsdl_glass_model["roughness"] = "alpha = max(r^2, 1e-5)";
+    nlohmann::json bsdl_sheen_model = {
+        {"brdf", "BSDL ContyKullaSheen: D_Charlie G2 / (4 mu_o mu_i), no Fresnel"},
+        {"distribution", "charlie: (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)"},
+        {"shadowing", "estevez_kulla_soft: G2 = 1/(1 + Lambda(mu_o) + Lambda(mu_i)^(1 + 2 (1 - mu_i)^8)), "
+                      "Lambda the Estevez-Kulla fit (BSDL's legacy, non-reciprocal G2)"},
+        {"roughness", "alpha = clamp(rough, 0.06, 1)"},
+        {"lookup", "BSDL reads albedo = 1 - the table, linear in both axes"},
+        {"cos_theta", "below 1e-4 computed at 1e-4 (the first column's 1e-6 included)"}};
     nlohmann::json glass_model = tables::glass_model(Visibility::height_correlated, false);
     glass_model.erase("side");
     glass_model["side"] = "ggx_glass_E: eta = n; ggx_glass_inv_E: eta = 1/n";
@@ -844,7 +866,8 @@ std::vector<PresetDeclaration> declare() {
     all.push_back(
         {{"osl_bsdl",
           "OSL BSDL's energy tables: MiniMicrofacetGGX (16x16, 1 - E of GGX, cos = (i/15)^2, alpha = (j/15)^2) and "
-          "DielectricFront and Back (16x16x32, 1 - (E_R + E_T) of rough glass, cos = i/15)",
+          "DielectricFront and Back (16x16x32, 1 - (E_R + E_T) of rough glass, cos = i/15) and ContyKullaSheen (16x16, "
+          "1 - E of the Charlie sheen, cos = i/15)",
           PixelType::float32},
          {{"osl_bsdl_ggx", "BSDL spi::MiniMicrofacetGGX: 1 - E (height-correlated GGX, F = 1)",
            "AcademySoftwareFoundation/OpenShadingLanguage @ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa "
@@ -872,7 +895,20 @@ std::vector<PresetDeclaration> declare() {
              1.0}},
            {},
            bsdl_glass_model,
-           {checks::glass_complement_index_matched(Visibility::height_correlated, true)}}}});
+           {checks::glass_complement_index_matched(Visibility::height_correlated, true)}},
+          {"osl_bsdl_sheen",
+           "BSDL ContyKullaSheen (spi::CharlieLobe): 1 - E of Charlie with the Estevez-Kulla Lambda and the "
+           "terminator softening, 16x16",
+           "AcademySoftwareFoundation/OpenShadingLanguage @ad63273a0b0fb4d46c2d2e34bf2323f6cb69c3aa "
+           "src/libbsdl/src/genluts.cpp, include/BSDL/MTX/bsdf_sheen_decl.h and bsdf_sheen_impl.h "
+           "(ContyKullaDist, ContyKullaSheen: the legacy G2)",
+           {bsdl_linear_cos(16), bsdl_sheen_alpha(16)},
+           {{"1 - E: the energy the sheen lobe loses, 1 - integral of f cos(theta_i) dw_i",
+             {{"sheen_charlie_moments", 0, -1.0}},
+             1.0}},
+           {{"sheen_shadowing", "estevez_kulla_soft"}},
+           bsdl_sheen_model,
+           {checks::charlie_moment(0, 3, SheenShadowing::estevez_kulla_soft, true)}}}});
     {
         // Adobe's OpenPBR BSDF: the energy its single-scattering GGX lobes
         // lose, 1 - E, with the separable Smith G (the tables agree with it,
