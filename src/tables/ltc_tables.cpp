@@ -85,19 +85,25 @@ bool is_matrix(Layout l) { return l == Layout::heitz_matrix || l == Layout::hdrp
 // fit: they do not fit.
 bool fits(Layout l) { return l != Layout::heitz_norms && l != Layout::norm; }
 
+// The norm tables of a generic lobe compute n0 = A + B to the quality's
+// tolerance: the lobe's own norm tolerance (the default quality's) times
+// this, each of A and B to half of it.
+double norm_tolerance_scale(Quality q) { return q == Quality::draft ? 100.0 : q == Quality::reference ? 0.01 : 1.0; }
+
 class LtcEvaluator final : public TexelEvaluator {
 public:
     LtcEvaluator(LtcTexelLobe lobe, Options options, Layout layout, const LtcFitOptions& opt,
-                 std::shared_ptr<FitFigures> figures)
+                 std::shared_ptr<FitFigures> figures, double norm_scale)
         : lobe_(std::move(lobe)), options_(std::move(options)), layout_(layout), opt_(opt),
-          figures_(std::move(figures)) {}
+          figures_(std::move(figures)), norm_scale_(norm_scale) {}
 
     // coords: (roughness, cos_theta) in the definition's order.
     TexelValue evaluate(const double* c, std::uint64_t texel) const override {
         const double r = c[0], mu = c[1];
-        const LtcLobe lobe = lobe_(r, mu, options_);
+        LtcLobe lobe = lobe_(r, mu, options_);
         TexelValue out;
         if (!fits(layout_)) {
+            if (lobe.kind == LtcLobeKind::generic) lobe.norm_tolerance *= 0.5 * norm_scale_;
             const LtcNorms n = ltc_norms(lobe);
             if (layout_ == Layout::norm) {
                 out.value[0] = n.n0;
@@ -146,6 +152,7 @@ private:
     Layout layout_;
     LtcFitOptions opt_;
     std::shared_ptr<FitFigures> figures_;
+    double norm_scale_;
 };
 
 double median(std::vector<double> v) {
@@ -273,7 +280,8 @@ TableDefinition ltc_table(LtcTableSpec e) {
         const Options options = with_defaults(e.options, s.params);
         const LtcLobe sample = e.lobe(0.5, 0.5, options);
         PreparedTable p;
-        p.evaluator = std::make_unique<LtcEvaluator>(e.lobe, options, layout, opt, figures);
+        const double norm_scale = norm_tolerance_scale(s.quality);
+        p.evaluator = std::make_unique<LtcEvaluator>(e.lobe, options, layout, opt, figures, norm_scale);
         p.model = e.model(options);
         p.model["layout"] = e.layout_text;
         p.model["frame"] = kFrame;
@@ -281,6 +289,11 @@ TableDefinition ltc_table(LtcTableSpec e) {
         p.model["engine_source"] = e.engine_source;
         if (!fits(layout)) {
             p.method = {{"rule", kNormRule}};
+            if (sample.kind == LtcLobeKind::generic) {
+                p.method["rule"] = std::string(kNormRule) + "; n0 = A + B by the generic lobe path, each to half "
+                                                             "of abs_tolerance";
+                p.method["abs_tolerance"] = sample.norm_tolerance * norm_scale;
+            }
             return p;
         }
         p.method = {{"rule", rule(sample, e.norms_rule)},
