@@ -8,7 +8,10 @@
 //
 // Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF"
 #include <cmath>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <tuple>
 
 #include "brdflut/charlie_ek.h"
 #include "brdflut/random.h"
@@ -28,7 +31,8 @@ namespace brdflut {
 // cos p > (mu_o / (2 cos t) - mu_o cos t) / (sin_o sin t), p in [0, p_max]
 // (twice, by symmetry). The azimuth is split where mu_i = 1/2 (Lambda's
 // kink); both levels are adaptive Gauss-Kronrod (15,31).
-std::array<double, 2> tables::charlie_moments_by_half_vector(double mu_o, double alpha, SheenShadowing shadowing) {
+namespace {
+std::array<double, 2> charlie_moments_by_half_vector_uncached(double mu_o, double alpha, SheenShadowing shadowing) {
     const CharlieLobe lobe(alpha, shadowing);
     const double sin_o = std::sqrt((1.0 - mu_o) * (1.0 + mu_o));
     const Vec3 wo{sin_o, 0.0, mu_o};
@@ -83,6 +87,25 @@ std::array<double, 2> tables::charlie_moments_by_half_vector(double mu_o, double
         a = b;
     }
     return total;
+}
+}  // namespace
+
+// The checks of a table's channels (and the presets holding the same
+// moments) ask for the same points: each is computed once per process.
+std::array<double, 2> tables::charlie_moments_by_half_vector(double mu_o, double alpha, SheenShadowing shadowing) {
+    using Key = std::tuple<double, double, SheenShadowing>;
+    static std::mutex mutex;
+    static std::map<Key, std::array<double, 2>> done;
+    const Key key{mu_o, alpha, shadowing};
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        const auto it = done.find(key);
+        if (it != done.end()) return it->second;
+    }
+    const std::array<double, 2> r = charlie_moments_by_half_vector_uncached(mu_o, alpha, shadowing);
+    const std::lock_guard<std::mutex> lock(mutex);
+    done.emplace(key, r);
+    return r;
 }
 
 namespace sheen_charlie_family {  // this family's own names, apart from the other families' in a unity build
