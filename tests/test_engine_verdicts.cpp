@@ -52,10 +52,14 @@ double error_of(const nlohmann::json& texel) { return texel.at("error").get<doub
 // The standard error of a 2^20-sample estimate of Cycles' s at one texel, by
 // Cycles' own estimator (visible normals of GGX, reflected, the weight
 // averaged; independent draws where Cycles uses Sobol-Burley, whose error is
-// at most of this order): the scale of the noise in Cycles' tables.
+// at most of this order): the scale of the noise in Cycles' tables. The
+// estimator's standard deviation is taken from 2^14 draws (its weights lie
+// in [0, 1], so that is within a few percent) and divided by sqrt(2^20).
 double cycles_noise(double alpha, double mu, MomentWeight w, std::uint64_t seed) {
     const GgxLobe lobe(alpha, Visibility::height_correlated, GgxLobeKind::vndf);
-    return generic_moments_mc<1>(lobe, mu, {w}, 1 << 20, seed).error[0];
+    constexpr long long kDraws = 1 << 14;
+    const double se = generic_moments_mc<1>(lobe, mu, {w}, kDraws, seed).error[0];
+    return se * std::sqrt(static_cast<double>(kDraws) / static_cast<double>(1 << 20));
 }
 
 }  // namespace
