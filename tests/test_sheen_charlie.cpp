@@ -40,37 +40,37 @@ constexpr double kAtOne[5] = {21.5473, 3.82987, 0.19823, -1.97760, -4.32054};
 
 TEST(EstevezKulla, FitIsThePapersAtBothEndsAndInterpolatesInOneMinusRSquared) {
     for (double x : {0.0, 0.1, 0.3, 0.5}) {
-        EXPECT_NEAR(estevez_kulla_L(x, 0.0), paper_L(x, kAtZero), 1e-13) << x;
-        EXPECT_NEAR(estevez_kulla_L(x, 1.0), paper_L(x, kAtOne), 1e-13) << x;
+        EXPECT_NEAR(EstevezKullaFit(0.0).L(x), paper_L(x, kAtZero), 1e-13) << x;
+        EXPECT_NEAR(EstevezKullaFit(1.0).L(x), paper_L(x, kAtOne), 1e-13) << x;
         // HDRP's CharlieL: lerp(fit at 0, fit at 1, 1 - (1 - r)^2), coefficient by coefficient.
         const double r = 0.35, w = 1.0 - (1.0 - r) * (1.0 - r);
         double p[5];
         for (int i = 0; i < 5; ++i) p[i] = kAtZero[i] + (kAtOne[i] - kAtZero[i]) * w;
-        EXPECT_NEAR(estevez_kulla_L(x, r), paper_L(x, p), 1e-12) << x;
+        EXPECT_NEAR(EstevezKullaFit(r).L(x), paper_L(x, p), 1e-12) << x;
     }
 }
 
 TEST(EstevezKulla, LambdaIsContinuousWithItsSlopeAtOneHalf) {
     for (double alpha : {0.0, 0.2, 0.7, 1.0}) {
         const double h = 1e-6, m = 0.5;
-        const double at = estevez_kulla_lambda(m, alpha);
-        EXPECT_NEAR(estevez_kulla_lambda(std::nextafter(m, 0.0), alpha), at, 1e-12 * at) << alpha;
+        const double at = EstevezKullaFit(alpha).lambda(m);
+        EXPECT_NEAR(EstevezKullaFit(alpha).lambda(std::nextafter(m, 0.0)), at, 1e-12 * at) << alpha;
         // One-sided slopes on either side agree (C1); the second branch
         // reflects L about 1/2.
-        const double left = (at - estevez_kulla_lambda(m - h, alpha)) / h;
-        const double right = (estevez_kulla_lambda(m + h, alpha) - at) / h;
+        const double left = (at - EstevezKullaFit(alpha).lambda(m - h)) / h;
+        const double right = (EstevezKullaFit(alpha).lambda(m + h) - at) / h;
         EXPECT_NEAR(left, right, 1e-4 * std::abs(left)) << alpha;
         // Lambda decreases with mu: more shadowing at grazing angles.
-        EXPECT_GT(estevez_kulla_lambda(0.1, alpha), estevez_kulla_lambda(0.9, alpha));
+        EXPECT_GT(EstevezKullaFit(alpha).lambda(0.1), EstevezKullaFit(alpha).lambda(0.9));
     }
 }
 
 TEST(EstevezKulla, TerminatorSofteningActsOnTheLightOnly) {
     for (double alpha : {0.1, 0.6}) {
         // No change at normal incidence; Lambda^(1 + 2 (1 - mu)^8) elsewhere.
-        EXPECT_DOUBLE_EQ(estevez_kulla_lambda_light(1.0, alpha, true), estevez_kulla_lambda(1.0, alpha));
-        const double mu = 0.2, l = estevez_kulla_lambda(mu, alpha);
-        EXPECT_NEAR(estevez_kulla_lambda_light(mu, alpha, true), std::pow(l, 1.0 + 2.0 * std::pow(0.8, 8)),
+        EXPECT_DOUBLE_EQ(EstevezKullaFit(alpha).lambda_light(1.0, true), EstevezKullaFit(alpha).lambda(1.0));
+        const double mu = 0.2, l = EstevezKullaFit(alpha).lambda(mu);
+        EXPECT_NEAR(EstevezKullaFit(alpha).lambda_light(mu, true), std::pow(l, 1.0 + 2.0 * std::pow(0.8, 8)),
                     1e-12 * std::pow(l, 1.4));
         const Vec3 a = direction_from_mu(0.3), b{-std::sqrt(1.0 - 0.64), 0.0, 0.8};
         const CharlieLobe plain(alpha, SheenShadowing::estevez_kulla), soft(alpha, SheenShadowing::estevez_kulla_soft);

@@ -45,20 +45,14 @@ const char* to_string(SheenShadowing s);
 // Throws brdflut::Error naming the allowed values.
 SheenShadowing sheen_shadowing_from_string(const std::string& name);
 
-// The fitted L(x) at roughness alpha in [0, 1].
-double estevez_kulla_L(double x, double alpha);
-// Lambda(mu), mu in [0, 1].
-double estevez_kulla_lambda(double mu, double alpha);
-// Lambda of the light direction: Lambda(mu)^(1 + 2 (1 - mu)^8) when soft.
-double estevez_kulla_lambda_light(double mu, double alpha, bool soft);
-
-// The fit at one alpha, its coefficients and L(1/2) computed once: the same
-// values as the functions above, bit for bit.
+// The fit at roughness alpha in [0, 1], its coefficients and L(1/2)
+// computed once.
 class EstevezKullaFit {
 public:
     explicit EstevezKullaFit(double alpha);
-    double L(double x) const;
-    double lambda(double mu) const;
+    double L(double x) const;         // the fitted L(x)
+    double lambda(double mu) const;   // Lambda(mu), mu in [0, 1]
+    // Lambda of the light direction: Lambda(mu)^(1 + 2 (1 - mu)^8) when soft.
     double lambda_light(double mu, bool soft) const;
 
 private:

@@ -150,6 +150,22 @@ public:
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
 };
 
+// A term of f that is a pure function of (alpha, mu_o), such as a
+// shadowing term of the view: the generic path asks for f at many wi of
+// one wo, so the value of the last (alpha, mu_o) this thread asked for is
+// kept and `compute()` runs once per view. Each call site has its own
+// cache (the lambda's type makes its own instantiation).
+template <class Compute>
+double per_view(double alpha, double mu_o, Compute compute) {
+    thread_local double kept_alpha = -1.0, kept_mu = -1.0, kept = 0.0;
+    if (kept_alpha != alpha || kept_mu != mu_o) {
+        kept = compute();
+        kept_alpha = alpha;
+        kept_mu = mu_o;
+    }
+    return kept;
+}
+
 // The sampler of the sheen lobes: an equal mixture of the cosine-weighted
 // hemisphere and the mirror directions of normals. `normal(u, phi)` returns a
 // normal drawn from the lobe's normal distribution for a uniform u and the

@@ -19,13 +19,7 @@ namespace {
 // mu_o changes. The same value as Beckmann::lambda(mu_o), at the cost of one
 // erfc per view instead of one per evaluation.
 double view_lambda(const Beckmann& b, double mu_o) {
-    thread_local double alpha = -1.0, mu = -1.0, lambda = 0.0;
-    if (b.alpha != alpha || mu_o != mu) {
-        alpha = b.alpha;
-        mu = mu_o;
-        lambda = b.lambda(mu_o);
-    }
-    return lambda;
+    return per_view(b.alpha, mu_o, [&] { return b.lambda(mu_o); });
 }
 }  // namespace
 

@@ -46,14 +46,6 @@ double EstevezKullaFit::lambda_light(double mu, bool soft) const {
     return std::pow(lambda, 1.0 + 2.0 * s8);
 }
 
-double estevez_kulla_L(double x, double alpha) { return EstevezKullaFit(alpha).L(x); }
-
-double estevez_kulla_lambda(double mu, double alpha) { return EstevezKullaFit(alpha).lambda(mu); }
-
-double estevez_kulla_lambda_light(double mu, double alpha, bool soft) {
-    return EstevezKullaFit(alpha).lambda_light(mu, soft);
-}
-
 double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (!(wo.z > 0.0) || !(wi.z > 0.0)) return 0.0;
     const Vec3 s{wo.x + wi.x, wo.y + wi.y, wo.z + wi.z};
@@ -61,15 +53,8 @@ double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (!(len > 0.0)) return 0.0;
     const double d = charlie_.D(s.z / len);
     if (shadowing_ == SheenShadowing::neubelt) return d * neubelt_visibility(wo.z, wi.z);
-    // The generic path asks for many wi at one wo: Lambda(mu_o) of the last
-    // (alpha, mu_o) this thread asked for is kept (a pure function of both).
-    struct LastView {
-        double alpha = -1.0, mu = -1.0, lambda = 0.0;
-    };
-    thread_local LastView last;
-    if (last.alpha != charlie_.alpha || last.mu != wo.z) last = {charlie_.alpha, wo.z, fit_.lambda(wo.z)};
-    const double g =
-        1.0 / (1.0 + last.lambda + fit_.lambda_light(wi.z, shadowing_ == SheenShadowing::estevez_kulla_soft));
+    const double lambda_o = per_view(charlie_.alpha, wo.z, [&] { return fit_.lambda(wo.z); });
+    const double g = 1.0 / (1.0 + lambda_o + fit_.lambda_light(wi.z, shadowing_ == SheenShadowing::estevez_kulla_soft));
     return d * g / (4.0 * wo.z * wi.z);
 }
 

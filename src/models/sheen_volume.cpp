@@ -463,7 +463,8 @@ std::array<double, 3> SheenVolumeLayer::reflectances(double mu) const {
     if (!(mu > 0.0 && mu <= 1.0)) throw Error("sheen volume: mu must be in (0, 1]");
     const std::vector<double> w = scattering_row(sigma_, -mu, nodes_);
     const double lambda = extinction(sigma_, mu) / mu;
-    return {options_.every_order ? first_collision(w, lambda, to_top_) : std::nan(""), options_.cut_after > 0 ? first_collision(w, lambda, cut_) : std::nan(""),
+    return {options_.every_order ? first_collision(w, lambda, to_top_) : std::nan(""),
+            options_.cut_after > 0 ? first_collision(w, lambda, cut_) : std::nan(""),
             first_collision(w, lambda, single_)};
 }
 
@@ -746,6 +747,5 @@ double SheenVolumeLobe::multiple_scattering_albedo(double mu_o) const {
     }
     return kTwoPi * sum;
 }
-
 
 }  // namespace brdflut

@@ -78,6 +78,11 @@ public:
         std::call_once(slot->once, [&] { slot->value = make(); });
         return slot->value;
     }
+    // Whether a value of the key is made or being made.
+    bool contains(const Key& key) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        return slots_.count(key) != 0;
+    }
     static OnceCache& instance() {
         static OnceCache cache;
         return cache;
@@ -99,11 +104,18 @@ private:
     std::size_t id_;
 };
 
+// every_order false: the cut walk and the single scattering only, unless
+// the every-order layer at (alpha, r) is already made, which holds them too
+// (the same values: they are computed alike with or without the solve).
 std::shared_ptr<const SheenVolumeLayer> layer_at(double alpha, const Resolution& r, bool every_order = true) {
-    return OnceCache<SheenVolumeLayer>::instance().get(
-        {tables::key_bits(alpha),
-         static_cast<std::uint64_t>((r.nodes_per_panel * 16 + r.depth_refine) * 2 + (every_order ? 1 : 0))},
-        [&] { return std::make_shared<const SheenVolumeLayer>(alpha, options_for(r, every_order)); });
+    OnceCache<SheenVolumeLayer>& cache = OnceCache<SheenVolumeLayer>::instance();
+    auto key = [&](bool every) -> OnceCache<SheenVolumeLayer>::Key {
+        return {tables::key_bits(alpha),
+                static_cast<std::uint64_t>((r.nodes_per_panel * 16 + r.depth_refine) * 2 + (every ? 1 : 0))};
+    };
+    if (!every_order && cache.contains(key(true))) every_order = true;
+    return cache.get(key(every_order),
+                     [&] { return std::make_shared<const SheenVolumeLayer>(alpha, options_for(r, every_order)); });
 }
 
 std::shared_ptr<const SheenVolumeLobe> lobe_at(double alpha) {

@@ -9,7 +9,6 @@
 #include <functional>
 #include <memory>
 #include <mutex>
-#include <optional>
 
 #include "brdflut/burley.h"
 #include "brdflut/error.h"
@@ -33,19 +32,20 @@ struct Tap {
     std::array<double, 3> weight, error;
 };
 
-// A kernel's taps, made by the first caller (thread-safe).
-class LazyTaps {
+// A value made by the first caller (thread-safe), kept for the others.
+template <class T>
+class Lazy {
 public:
-    explicit LazyTaps(std::function<std::vector<Tap>()> make) : make_(std::move(make)) {}
-    const std::vector<Tap>& get() const {
-        std::call_once(once_, [this] { taps_ = make_(); });
-        return taps_;
+    explicit Lazy(std::function<T()> make) : make_(std::move(make)) {}
+    const T& get() const {
+        std::call_once(once_, [this] { value_ = make_(); });
+        return value_;
     }
 
 private:
-    std::function<std::vector<Tap>()> make_;
+    std::function<T()> make_;
     mutable std::once_flag once_;
-    mutable std::vector<Tap> taps_;
+    mutable T value_{};
 };
 
 class KernelEvaluator final : public TexelEvaluator {
@@ -75,7 +75,7 @@ public:
     }
 
 private:
-    LazyTaps taps_;
+    Lazy<std::vector<Tap>> taps_;
     double scale_;
 };
 
@@ -185,15 +185,11 @@ TableDefinition profile_kernel_table(std::string id, std::string description,
         const double tol = kTolerances.at(s.quality);
         // The kernel is made when the first texel asks for it, and its
         // separable error once every texel is filled.
-        auto kernel = std::make_shared<std::optional<SeparableKernel>>();
-        auto make = [kernel, p, k, tol]() -> const SeparableKernel& {
-            if (!*kernel)
-                *kernel = separable_kernel(p, k.shape, k.weights, separable_tap_offsets(k.taps, k.radius, k.spacing),
-                                           tol);
-            return **kernel;
-        };
+        const auto kernel = std::make_shared<const Lazy<SeparableKernel>>([p, k, tol] {
+            return separable_kernel(p, k.shape, k.weights, separable_tap_offsets(k.taps, k.radius, k.spacing), tol);
+        });
         PreparedTable out;
-        out.evaluator = std::make_unique<KernelEvaluator>([make] { return taps_of(make()); }, k.taps - 1);
+        out.evaluator = std::make_unique<KernelEvaluator>([kernel] { return taps_of(kernel->get()); }, k.taps - 1);
         out.model = model(s);
         out.model["kernel"] = to_string(k.shape);
         out.model["weights"] = to_string(k.weights);
@@ -201,8 +197,8 @@ TableDefinition profile_kernel_table(std::string id, std::string description,
         out.model["radius_mm"] = k.radius;
         out.model["spacing"] = k.spacing;
         out.method = tables::quadrature_method(kRule, tol);
-        out.finish = [make, p, k, tol](Table& t) {
-            t.method["separable_error"] = error_json(separable_error(p, make(), tol), k.taps, k.radius);
+        out.finish = [kernel, p, k, tol](Table& t) {
+            t.method["separable_error"] = error_json(separable_error(p, kernel->get(), tol), k.taps, k.radius);
             t.method["separable_error"]["meaning"] = kSeparableErrorMeaning;
         };
         return out;
