@@ -8,10 +8,7 @@
 //
 // Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF"
 #include <cmath>
-#include <map>
 #include <memory>
-#include <mutex>
-#include <tuple>
 
 #include "brdflut/charlie_ek.h"
 #include "brdflut/random.h"
@@ -91,21 +88,11 @@ std::array<double, 2> charlie_moments_by_half_vector_uncached(double mu_o, doubl
 }  // namespace
 
 // The checks of a table's channels (and the presets holding the same
-// moments) ask for the same points: each is computed once per process.
+// moments) ask for the same points: each is kept in the shared results.
 std::array<double, 2> tables::charlie_moments_by_half_vector(double mu_o, double alpha, SheenShadowing shadowing) {
-    using Key = std::tuple<double, double, SheenShadowing>;
-    static std::mutex mutex;
-    static std::map<Key, std::array<double, 2>> done;
-    const Key key{mu_o, alpha, shadowing};
-    {
-        const std::lock_guard<std::mutex> lock(mutex);
-        const auto it = done.find(key);
-        if (it != done.end()) return it->second;
-    }
-    const std::array<double, 2> r = charlie_moments_by_half_vector_uncached(mu_o, alpha, shadowing);
-    const std::lock_guard<std::mutex> lock(mutex);
-    done.emplace(key, r);
-    return r;
+    static tables::SharedResults<3, std::array<double, 2>> done(1 << 12);
+    return done.get({tables::key_bits(mu_o), tables::key_bits(alpha), tables::key_enum(shadowing)},
+                    [&] { return charlie_moments_by_half_vector_uncached(mu_o, alpha, shadowing); });
 }
 
 namespace sheen_charlie_family {  // this family's own names, apart from the other families' in a unity build
