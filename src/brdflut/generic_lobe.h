@@ -29,11 +29,14 @@
 // support: a cone about an axis d in the x-z plane meets a ring where
 // wi.d = cos(theta) p.d + sin(theta) cos(psi) e1.d, linear in cos(psi), as
 // the horizon does), and a ring is split where it crosses a declared kink
-// cone. The theta axis is split at theta_a, at the width w, at every
-// declared kink and where the rings touch a declared cone; pieces below w
-// are integrated in s = theta^2 (uniform in area near the peak), pieces
-// above it in ln(theta) (so that a lobe of width w, or its tail, takes the
-// same number of nodes whatever w is); an end at
+// cone. The theta axis is split at theta_a, at the width w and the narrow
+// width aspect w (below), at every declared kink and where the rings touch
+// a declared cone; the piece from the peak up to aspect w is integrated in
+// s = theta^2 (uniform in area near the peak), every other piece in
+// ln(theta) (so that a lobe of width w, or its tail, takes the same number
+// of nodes whatever w is, a ring of an elongated lobe, whose integral falls
+// as 1 / theta between aspect w and w, is smooth, and a piece that starts at
+// the horizon clip is resolved on the scale of theta_a); an end at
 // the horizon clip or at a kink is flattened by a polynomial change of
 // variable (the psi integral has a (theta - theta_a)^(3/2) kink there). The
 // azimuth is integrated in psi' with tan(psi) = rho tan(psi'), rho(theta) =

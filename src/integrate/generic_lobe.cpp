@@ -94,6 +94,9 @@ constexpr double kLnPanelWidth = 2.0;
 // panel's value): far in the tail, where the outer weight is tiny, the
 // budget alone would accept a panel that has resolved nothing.
 constexpr double kMaxInnerRelTol = 1e-6;
+// ... but never below this fraction of the budget: a ring whose whole value
+// is far below the budget needs no relative accuracy.
+constexpr double kTailFraction = 1e-3;
 // The range of E_avg in ln(mu) is integrated from panels of at most this width.
 constexpr double kLnMuPanelWidth = 3.0;
 // The loosest tolerance of a moment inside E_avg.
@@ -317,7 +320,8 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     }
     const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
     // Never below what the rounding of f lets the rule resolve.
-    opt.abs_tol = std::max(std::min(wanted, std::max(kMaxInnerRelTol * size, 1e-300)), 4.0 * fr.rel_rounding * size);
+    opt.abs_tol = std::max(std::min(wanted, std::max({kMaxInnerRelTol * size, kTailFraction * wanted, 1e-300})),
+                           4.0 * fr.rel_rounding * size);
     Estimate<kMaxWeights> e;
     e.evaluations = 0;
     e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
@@ -371,6 +375,7 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
             }
         }
     add_point(fr.w, false);
+    add_point(fr.aspect * fr.w, false);
     for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
     std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.theta < b.theta; });
     std::vector<Point> merged;
@@ -395,7 +400,14 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
     for (std::size_t i = 0; i < pieces; ++i) {
         const double lo = merged[i].theta, hi = merged[i + 1].theta;
         const EndMap map{merged[i].kink, merged[i + 1].kink};
-        const bool in_s = hi <= fr.w * (1.0 + 1e-12);  // below the width: s = theta^2
+        // The piece from the peak, up to the narrow width aspect * w: s =
+        // theta^2. Every other piece: ln(theta). Between aspect * w and w a
+        // ring's integral of an elongated lobe falls as 1 / theta (its arc
+        // across the lobe shrinks as the ring grows), smooth in ln(theta)
+        // but a singularity s^(-1/2) cut off at (aspect w)^2 in s; and a
+        // piece that starts at the horizon clip theta_a changes on the
+        // scale of theta_a, which ln(theta) resolves however small it is.
+        const bool in_s = lo == 0.0 && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
         const double v0 = in_s ? lo * lo : std::log(lo), v1 = in_s ? hi * hi : std::log(hi);
         const double len = v1 - v0;
         auto integrand = [&](double u) -> std::array<double, kMaxWeights + 1> {

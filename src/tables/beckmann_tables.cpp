@@ -39,9 +39,10 @@ constexpr double kMinAlpha = 2e-6;
 
 const char* kQuadratureRule =
     "generic lobe path (generic_lobe.h): wi in polar coordinates (theta, psi) about the mirror direction; "
-    "theta split at the horizon clip, at the width w = 2 alpha and at the far end of the clipped band, "
-    "adaptive Gauss-Kronrod (10,21) in theta^2 below w and in ln(theta) above it (from panels of at most "
-    "2 units), ends at the horizon clip flattened by polynomial maps; nested with the azimuth clipped "
+    "theta split at the horizon clip, at the width w = 2 alpha, at aspect w and at the far end of the "
+    "clipped band, adaptive Gauss-Kronrod (10,21) in theta^2 from the peak to aspect w and in ln(theta) "
+    "beyond (from panels of at most 2 units), ends at the horizon clip flattened by polynomial maps; "
+    "nested with the azimuth clipped "
     "analytically to the upper hemisphere and integrated in psi' with tan(psi) = rho tan(psi'), "
     "rho = clamp(aspect w / theta, aspect, 1), aspect = min(1, mu_o + alpha) (adaptive Gauss-Kronrod "
     "(10,21)); E_avg: adaptive Gauss-Kronrod (10,21) in mu = b u^2 below b = 2 alpha and in ln(mu) above; "

@@ -33,8 +33,9 @@ constexpr double kMinAlpha = 2e-6;
 
 const char* kQuadratureRule =
     "generic lobe path (generic_lobe.h) over the GGX lobe: wi in polar coordinates about the mirror "
-    "direction, theta split at the horizon clip and at the width 2 alpha, adaptive Gauss-Kronrod (10,21) "
-    "in theta^2 below the width and in ln(theta) above, nested with the azimuth clipped analytically to the "
+    "direction, theta split at the horizon clip, at the width w = 2 alpha and at aspect w (aspect = "
+    "min(1, mu_o + alpha)), adaptive Gauss-Kronrod (10,21) in theta^2 from the peak to aspect w and in "
+    "ln(theta) beyond, nested with the azimuth clipped analytically to the "
     "upper hemisphere; averages: adaptive Gauss-Kronrod (10,21) over mu; alpha below 2e-6: the mirror "
     "limit; error per value: QUADPACK estimate plus the integrated inner estimates plus a bound on the "
     "rounding of the directions";
