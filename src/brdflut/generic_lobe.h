@@ -33,7 +33,7 @@
 // width aspect w (below), at every declared kink and where the rings touch
 // a declared cone; the piece from the peak up to aspect w is integrated in
 // s = theta^2 (uniform in area near the peak), every other piece in
-// ln(theta) (so that a lobe of width w, or its tail, takes the same number
+// ln(theta) (for a lobe without a peak, every piece below w in s) (so that a lobe of width w, or its tail, takes the same number
 // of nodes whatever w is, a ring of an elongated lobe, whose integral falls
 // as 1 / theta between aspect w and w, is smooth, and a piece that starts at
 // the horizon clip is resolved on the scale of theta_a); an end at

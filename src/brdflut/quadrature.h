@@ -441,12 +441,27 @@ struct AdaptiveOptions {
 };
 
 namespace detail {
+// The room adaptive_from reserves: the first panels and the usual few
+// bisections (more grow the vector as needed).
+inline std::size_t heap_room(std::size_t panels, const AdaptiveOptions& opt) {
+    return std::max(panels, static_cast<std::size_t>(std::min(opt.max_intervals, 16))) + 1;
+}
+// An empty work list with that room, for `panels` first panels: filled and
+// handed to adaptive_from, it is allocated once (an inner integral runs once
+// per node of its outer one, and allocations are what a sanitized build
+// spends most on there).
+template <std::size_t N>
+std::vector<Interval<N>> interval_heap(std::size_t panels, const AdaptiveOptions& opt) {
+    std::vector<Interval<N>> heap;
+    heap.reserve(heap_room(panels, opt));
+    return heap;
+}
+
 // The bisection loop of integrate_adaptive, from the intervals in `heap`
 // (out.evaluations counts those already evaluated).
 template <std::size_t N, class F>
 Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOptions& opt, Estimate<N> out) {
-    // Room for the usual few bisections (more grow the vector as needed).
-    heap.reserve(std::max(heap.size(), static_cast<std::size_t>(std::min(opt.max_intervals, 16))) + 1);
+    heap.reserve(heap_room(heap.size(), opt));
     auto less = [](const Interval<N>& p, const Interval<N>& q) { return p.worst < q.worst; };
     std::make_heap(heap.begin(), heap.end(), less);
     const int per_panel = kronrod_points(opt.rule);
@@ -519,9 +534,11 @@ Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
             }
             return out;
         }
-        return detail::adaptive_from<N>(f, std::vector<detail::Interval<N>>{first}, opt, out);
+        std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(1, opt);
+        heap.push_back(first);
+        return detail::adaptive_from<N>(f, std::move(heap), opt, out);
     }
-    std::vector<detail::Interval<N>> heap;  // adaptive_from reserves the room to bisect
+    std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(static_cast<std::size_t>(panels), opt);
     for (int k = 0; k < panels; ++k) {
         const double lo = k == 0 ? a : a + (b - a) * k / panels;
         const double hi = k + 1 == panels ? b : a + (b - a) * (k + 1) / panels;

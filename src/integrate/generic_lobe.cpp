@@ -3,6 +3,7 @@
 #include "brdflut/generic_lobe.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -297,26 +298,43 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     // Start from one panel, or, on the sphere next to the point wi = -wo,
     // from panels that isolate it (the ring passes within |theta -
     // theta_star| of it, where f turns over an arc of about that length).
-    std::vector<double> cuts{begin};
+    // The cuts (at most 4 + one per kink cone) in a buffer on the stack when
+    // they fit: a ring is integrated millions of times per table, and an
+    // allocation per ring is most of the cost in a sanitized build.
+    std::array<double, 12> local_cuts;
+    std::vector<double> more_cuts;
+    const std::size_t room = 4 + fr.kink_cones.size();
+    if (room > local_cuts.size()) more_cuts.resize(room);
+    double* const cuts = room > local_cuts.size() ? more_cuts.data() : local_cuts.data();
+    std::size_t ncuts = 0;
+    cuts[ncuts++] = begin;
     if (fr.theta_star >= 0.0 && sin_t > 0.0) {
         const double half = 2.0 * std::abs(theta - fr.theta_star) / sin_t;
         if (half < 0.25 * kPi)
             for (double psi : {fr.psi_star - half, fr.psi_star + half}) {
                 const double v = to_psi1(psi);
-                if (psi > 0.0 && psi < kPi && v > cuts.back() && v < end) cuts.push_back(v);
+                if (psi > 0.0 && psi < kPi && v > cuts[ncuts - 1] && v < end) cuts[ncuts++] = v;
             }
     }
     for (const FrameCone& k : fr.kink_cones) {
         const Crossing x = cross(k);
-        if (x.whole == 0 && x.v > begin && x.v < end) cuts.push_back(x.v);
+        if (x.whole == 0 && x.v > begin && x.v < end) cuts[ncuts++] = x.v;
     }
-    std::sort(cuts.begin(), cuts.end());
-    cuts.push_back(end);
+    std::sort(cuts, cuts + ncuts);
+    cuts[ncuts++] = end;
+    // One panel (the common case) that meets the tolerance needs no work list.
     std::vector<detail::Interval<kMaxWeights>> heap;
+    detail::Interval<kMaxWeights> first{};
     double size = 0.0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-        heap.push_back(detail::kronrod_panel<kMaxWeights>(f, cuts[i], cuts[i + 1], n, opt.rule));
-        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(heap.back().value[k]));
+    if (ncuts == 2) {
+        first = detail::kronrod_panel<kMaxWeights>(f, cuts[0], cuts[1], n, opt.rule);
+        for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(first.value[k]));
+    } else {
+        heap = detail::interval_heap<kMaxWeights>(ncuts - 1, opt);
+        for (std::size_t i = 0; i + 1 < ncuts; ++i) {
+            heap.push_back(detail::kronrod_panel<kMaxWeights>(f, cuts[i], cuts[i + 1], n, opt.rule));
+            for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(heap.back().value[k]));
+        }
     }
     const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
     // Never below what the rounding of f lets the rule resolve.
@@ -324,7 +342,24 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
                            4.0 * fr.rel_rounding * size);
     Estimate<kMaxWeights> e;
     e.evaluations = 0;
-    e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
+    bool done = false;
+    if (ncuts == 2) {
+        done = opt.max_intervals <= 1;
+        if (!done) {
+            done = true;
+            for (std::size_t k = 0; k < n; ++k) done = done && !(first.error[k] > opt.abs_tol);
+        }
+        if (done) {  // as adaptive_from sums one interval
+            for (std::size_t k = 0; k < kMaxWeights; ++k) {
+                e.value[k] += first.value[k];
+                e.error[k] += first.error[k];
+            }
+        } else {
+            heap = detail::interval_heap<kMaxWeights>(1, opt);
+            heap.push_back(first);
+        }
+    }
+    if (!done) e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
     for (std::size_t k = 0; k < n; ++k) {
         out[k] = 2.0 * e.value[k];
         out[kMaxWeights] += 2.0 * e.error[k];
@@ -400,14 +435,17 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
     for (std::size_t i = 0; i < pieces; ++i) {
         const double lo = merged[i].theta, hi = merged[i + 1].theta;
         const EndMap map{merged[i].kink, merged[i + 1].kink};
-        // The piece from the peak, up to the narrow width aspect * w: s =
-        // theta^2. Every other piece: ln(theta). Between aspect * w and w a
-        // ring's integral of an elongated lobe falls as 1 / theta (its arc
-        // across the lobe shrinks as the ring grows), smooth in ln(theta)
-        // but a singularity s^(-1/2) cut off at (aspect w)^2 in s; and a
-        // piece that starts at the horizon clip theta_a changes on the
-        // scale of theta_a, which ln(theta) resolves however small it is.
-        const bool in_s = lo == 0.0 && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
+        // About a peak: the piece from the peak up to the narrow width
+        // aspect * w in s = theta^2, every other piece in ln(theta). Between
+        // aspect * w and w a ring's integral of an elongated lobe falls as
+        // 1 / theta (its arc across the lobe shrinks as the ring grows),
+        // smooth in ln(theta) but a singularity s^(-1/2) cut off at
+        // (aspect w)^2 in s; and a piece that starts at the horizon clip
+        // theta_a changes on the scale of theta_a, which ln(theta) resolves
+        // however small it is. About the normal (no peak, w = aspect = 1):
+        // every piece below w in s (a sheen's pieces there start at its
+        // mirror ring, and take several times longer in ln(theta)).
+        const bool in_s = (lo == 0.0 || !fr.has_peak) && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
         const double v0 = in_s ? lo * lo : std::log(lo), v1 = in_s ? hi * hi : std::log(hi);
         const double len = v1 - v0;
         auto integrand = [&](double u) -> std::array<double, kMaxWeights + 1> {

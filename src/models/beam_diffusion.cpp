@@ -24,7 +24,11 @@ constexpr double kDepthCut = 50.0;
 template <std::size_t N, class F>
 Estimate<N> integrate_breaks(F&& f, const std::vector<double>& breaks, double rel_tol, std::size_t controlled = N) {
     Estimate<N> out;
-    std::vector<detail::Interval<N>> panels;
+    AdaptiveOptions opt;
+    opt.rule = KronrodRule::k21;
+    opt.max_intervals = 400;
+    opt.controlled = controlled;
+    std::vector<detail::Interval<N>> panels = detail::interval_heap<N>(breaks.size(), opt);
     double size = 0.0;
     {
         std::array<double, N> v{};
@@ -35,10 +39,6 @@ Estimate<N> integrate_breaks(F&& f, const std::vector<double>& breaks, double re
         for (std::size_t c = 0; c < controlled && c < N; ++c) size = std::max(size, std::abs(v[c]));
         out.evaluations = static_cast<int>(21 * panels.size());
     }
-    AdaptiveOptions opt;
-    opt.rule = KronrodRule::k21;
-    opt.max_intervals = 400;
-    opt.controlled = controlled;
     opt.abs_tol = std::max(rel_tol * size, 1e-300);
     return detail::adaptive_from<N>(f, std::move(panels), opt, out);
 }
