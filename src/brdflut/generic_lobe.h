@@ -31,12 +31,13 @@
 // the horizon does), and a ring is split where it crosses a declared kink
 // cone. The theta axis is split at theta_a, at the width w and the narrow
 // width aspect w (below), at every declared kink and where the rings touch
-// a declared cone; the piece from the peak up to aspect w is integrated in
+// a declared cone. The piece from the peak up to aspect w is integrated in
 // s = theta^2 (uniform in area near the peak), every other piece in
-// ln(theta) (for a lobe without a peak, every piece below w in s) (so that a lobe of width w, or its tail, takes the same number
-// of nodes whatever w is, a ring of an elongated lobe, whose integral falls
-// as 1 / theta between aspect w and w, is smooth, and a piece that starts at
-// the horizon clip is resolved on the scale of theta_a); an end at
+// ln(theta): a lobe of width w, or its tail, then takes the same number of
+// nodes whatever w is, the ring integral of an elongated lobe, which falls
+// as 1 / theta between aspect w and w, is smooth, and a piece that starts
+// at the horizon clip is resolved on the scale of theta_a. (A lobe without
+// a peak has w = aspect = 1 and every piece below 1 in s.) An end at
 // the horizon clip or at a kink is flattened by a polynomial change of
 // variable (the psi integral has a (theta - theta_a)^(3/2) kink there). The
 // azimuth is integrated in psi' with tan(psi) = rho tan(psi'), rho(theta) =

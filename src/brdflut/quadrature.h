@@ -460,6 +460,32 @@ std::vector<Interval<N>> interval_heap(std::size_t panels, const AdaptiveOptions
 // The bisection loop of integrate_adaptive, from the intervals in `heap`
 // (out.evaluations counts those already evaluated).
 template <std::size_t N, class F>
+Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOptions& opt, Estimate<N> out);
+
+// The same from one first panel: a panel that meets the tolerance (or no
+// room to bisect) is the answer, with no work list (the common case of an
+// inner integral, called once per outer node); else the bisection from it.
+template <std::size_t N, class F>
+Estimate<N> adaptive_from_one(F& f, const Interval<N>& first, const AdaptiveOptions& opt, Estimate<N> out) {
+    bool settled = opt.max_intervals <= 1;
+    if (!settled) {
+        settled = true;
+        for (std::size_t i = 0; i < N && i < opt.controlled; ++i)
+            if (first.error[i] > opt.abs_tol) settled = false;
+    }
+    if (!settled) {
+        std::vector<Interval<N>> heap = interval_heap<N>(1, opt);
+        heap.push_back(first);
+        return adaptive_from<N>(f, std::move(heap), opt, out);
+    }
+    for (std::size_t i = 0; i < N; ++i) {  // as adaptive_from sums
+        out.value[i] += first.value[i];
+        out.error[i] += first.error[i];
+    }
+    return out;
+}
+
+template <std::size_t N, class F>
 Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOptions& opt, Estimate<N> out) {
     heap.reserve(heap_room(heap.size(), opt));
     auto less = [](const Interval<N>& p, const Interval<N>& q) { return p.worst < q.worst; };
@@ -517,27 +543,8 @@ Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
     panels = std::max(panels, 1);
     const int per_panel = kronrod_points(opt.rule);
     out.evaluations = per_panel * panels;
-    auto within_tolerance = [&](const std::array<double, N>& e) {
-        for (std::size_t i = 0; i < N && i < opt.controlled; ++i)
-            if (e[i] > opt.abs_tol) return false;
-        return true;
-    };
-    if (panels == 1) {
-        // One panel that meets the tolerance (or no room to bisect) is the
-        // answer: no work list needed (this is the common case of an inner
-        // integral, called once per outer node).
-        const detail::Interval<N> first = detail::kronrod_panel<N>(f, a, b, opt.controlled, opt.rule);
-        if (opt.max_intervals <= 1 || within_tolerance(first.error)) {
-            for (std::size_t i = 0; i < N; ++i) {  // as the summation below
-                out.value[i] += first.value[i];
-                out.error[i] += first.error[i];
-            }
-            return out;
-        }
-        std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(1, opt);
-        heap.push_back(first);
-        return detail::adaptive_from<N>(f, std::move(heap), opt, out);
-    }
+    if (panels == 1)
+        return detail::adaptive_from_one<N>(f, detail::kronrod_panel<N>(f, a, b, opt.controlled, opt.rule), opt, out);
     std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(static_cast<std::size_t>(panels), opt);
     for (int k = 0; k < panels; ++k) {
         const double lo = k == 0 ? a : a + (b - a) * k / panels;

@@ -240,9 +240,12 @@ struct RingIntegrand {
 
 // Integral over the ring at polar angle theta (psi in [-psi_max, psi_max],
 // as twice [0, psi_max]) to the absolute tolerance budget / weight, or to
-// kMaxInnerRelTol of its size if that is looser: {moments, error estimate}.
+// kMaxInnerRelTol of its size if that is tighter, but not below
+// kTailFraction of the budget: {moments, error estimate}. cut_scratch has
+// room for 4 + fr.kink_cones.size() values.
 Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* weights, std::size_t n,
-                  double theta, double budget, double weight, int max_intervals, int* evaluations) {
+                  double theta, double budget, double weight, int max_intervals, int* evaluations,
+                  std::vector<double>& cut_scratch) {
     Row out{};
     const double cos_t = std::cos(theta), sin_t = std::sin(theta);
     double end = kPi;  // psi' range [0, end]
@@ -298,14 +301,10 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     // Start from one panel, or, on the sphere next to the point wi = -wo,
     // from panels that isolate it (the ring passes within |theta -
     // theta_star| of it, where f turns over an arc of about that length).
-    // The cuts (at most 4 + one per kink cone) in a buffer on the stack when
-    // they fit: a ring is integrated millions of times per table, and an
-    // allocation per ring is most of the cost in a sanitized build.
-    std::array<double, 12> local_cuts;
-    std::vector<double> more_cuts;
-    const std::size_t room = 4 + fr.kink_cones.size();
-    if (room > local_cuts.size()) more_cuts.resize(room);
-    double* const cuts = room > local_cuts.size() ? more_cuts.data() : local_cuts.data();
+    // The cuts go in the caller's scratch (room for 4 + one per kink cone):
+    // a ring is integrated millions of times per table, and an allocation
+    // per ring is most of the cost in a sanitized build.
+    double* const cuts = cut_scratch.data();
     std::size_t ncuts = 0;
     cuts[ncuts++] = begin;
     if (fr.theta_star >= 0.0 && sin_t > 0.0) {
@@ -322,44 +321,30 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     }
     std::sort(cuts, cuts + ncuts);
     cuts[ncuts++] = end;
-    // One panel (the common case) that meets the tolerance needs no work list.
-    std::vector<detail::Interval<kMaxWeights>> heap;
-    detail::Interval<kMaxWeights> first{};
+    const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
+    // The tolerance for a ring whose first panels are `size`; never below
+    // what the rounding of f lets the rule resolve.
+    auto tolerance = [&](double size) {
+        return std::max(std::min(wanted, std::max({kMaxInnerRelTol * size, kTailFraction * wanted, 1e-300})),
+                        4.0 * fr.rel_rounding * size);
+    };
+    Estimate<kMaxWeights> e;
+    e.evaluations = 0;
     double size = 0.0;
-    if (ncuts == 2) {
-        first = detail::kronrod_panel<kMaxWeights>(f, cuts[0], cuts[1], n, opt.rule);
+    if (ncuts == 2) {  // one panel (the common case): no work list unless it is bisected
+        const auto first = detail::kronrod_panel<kMaxWeights>(f, cuts[0], cuts[1], n, opt.rule);
         for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(first.value[k]));
+        opt.abs_tol = tolerance(size);
+        e = detail::adaptive_from_one<kMaxWeights>(f, first, opt, e);
     } else {
-        heap = detail::interval_heap<kMaxWeights>(ncuts - 1, opt);
+        std::vector<detail::Interval<kMaxWeights>> heap = detail::interval_heap<kMaxWeights>(ncuts - 1, opt);
         for (std::size_t i = 0; i + 1 < ncuts; ++i) {
             heap.push_back(detail::kronrod_panel<kMaxWeights>(f, cuts[i], cuts[i + 1], n, opt.rule));
             for (std::size_t k = 0; k < n; ++k) size = std::max(size, std::abs(heap.back().value[k]));
         }
+        opt.abs_tol = tolerance(size);
+        e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
     }
-    const double wanted = weight > 0.0 ? budget / weight : HUGE_VAL;
-    // Never below what the rounding of f lets the rule resolve.
-    opt.abs_tol = std::max(std::min(wanted, std::max({kMaxInnerRelTol * size, kTailFraction * wanted, 1e-300})),
-                           4.0 * fr.rel_rounding * size);
-    Estimate<kMaxWeights> e;
-    e.evaluations = 0;
-    bool done = false;
-    if (ncuts == 2) {
-        done = opt.max_intervals <= 1;
-        if (!done) {
-            done = true;
-            for (std::size_t k = 0; k < n; ++k) done = done && !(first.error[k] > opt.abs_tol);
-        }
-        if (done) {  // as adaptive_from sums one interval
-            for (std::size_t k = 0; k < kMaxWeights; ++k) {
-                e.value[k] += first.value[k];
-                e.error[k] += first.error[k];
-            }
-        } else {
-            heap = detail::interval_heap<kMaxWeights>(1, opt);
-            heap.push_back(first);
-        }
-    }
-    if (!done) e = detail::adaptive_from<kMaxWeights>(f, std::move(heap), opt, e);
     for (std::size_t k = 0; k < n; ++k) {
         out[k] = 2.0 * e.value[k];
         out[kMaxWeights] += 2.0 * e.error[k];
@@ -430,6 +415,8 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
     outer_opt.rule = KronrodRule::k21;
     outer_opt.max_intervals = opt.max_intervals;
     const double inner_budget = 0.25 * opt.abs_tol / static_cast<double>(pieces);
+    // The rings' cuts, one at a time (see ring_integral).
+    std::vector<double> cut_scratch(4 + fr.kink_cones.size());
     int evaluations = 0;
 
     for (std::size_t i = 0; i < pieces; ++i) {
@@ -461,7 +448,8 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
             }
             const double weight = dw * len * m[1];
             if (!(weight > 0.0)) return {};
-            Row r = ring_integral(lobe, fr, weights, n, theta, inner_budget, weight, opt.max_intervals, &evaluations);
+            Row r = ring_integral(lobe, fr, weights, n, theta, inner_budget, weight, opt.max_intervals, &evaluations,
+                                  cut_scratch);
             for (double& x : r) x *= weight;
             return r;
         };

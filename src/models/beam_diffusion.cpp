@@ -28,7 +28,7 @@ Estimate<N> integrate_breaks(F&& f, const std::vector<double>& breaks, double re
     opt.rule = KronrodRule::k21;
     opt.max_intervals = 400;
     opt.controlled = controlled;
-    std::vector<detail::Interval<N>> panels = detail::interval_heap<N>(breaks.size(), opt);
+    std::vector<detail::Interval<N>> panels = detail::interval_heap<N>(breaks.size() - 1, opt);
     double size = 0.0;
     {
         std::array<double, N> v{};
