@@ -31,7 +31,9 @@
 // the horizon does), and a ring is split where it crosses a declared kink
 // cone. The theta axis is split at theta_a, at the width w and the narrow
 // width aspect w (below), at every declared kink and where the rings touch
-// a declared cone. The piece from the peak up to aspect w is integrated in
+// a declared cone; a declared point kink (a point zero or cusp of f) is a
+// break of theta, and a ring that passes near it is cut at psi about it.
+// The piece from the peak up to aspect w is integrated in
 // s = theta^2 (uniform in area near the peak), every other piece in
 // ln(theta): a lobe of width w, or its tail, then takes the same number of
 // nodes whatever w is, the ring integral of an elongated lobe, which falls
@@ -85,6 +87,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "brdflut/math.h"
@@ -116,6 +119,15 @@ struct LobeHints {
     double width = 1.0;
     // Width across that plane over the width in it, in (0, 1].
     double aspect = 1.0;
+    // A direction (unit, in the x-z plane, on the lobe's side of the
+    // horizon) where f has a point singularity: a zero or a cusp that goes
+    // as |angle|^q with q not an even integer (a Charlie sheen's
+    // sin(theta_h)^(1/alpha) at the mirror direction, where h is the
+    // normal). The ring through it is a break point, the rings next to it
+    // are cut about it, and at the centre of the rings (the peak, or the
+    // normal for a lobe without one) the first piece is integrated in
+    // theta, flattened there, not in s.
+    std::optional<Vec3> point_kink;
     // Polar angles about the peak (radians) where f has a kink or a jump.
     std::vector<double> kinks;
     // Cones (see LobeCone) that bound the lobe's support: f is 0 outside
@@ -154,18 +166,19 @@ public:
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
 };
 
-// A term of f that is a pure function of (alpha, mu_o), such as a
-// shadowing term of the view: the generic path asks for f at many wi of
-// one wo, so the value of the last (alpha, mu_o) this thread asked for is
-// kept and `compute()` runs once per view. Each call site has its own
-// cache (the lambda's type makes its own instantiation).
+// A term of f that is a pure function of a roughness and a cosine, such as
+// a shadowing term of the view or of the light: the generic path asks for f
+// at many wi of one wo, and about the normal every wi of a ring has the
+// same cosine, so the value of the last (alpha, mu) this thread asked for is
+// kept and `compute()` runs once per view (or per ring). Each call site has
+// its own cache (the lambda's type makes its own instantiation).
 template <class Compute>
-double per_view(double alpha, double mu_o, Compute compute) {
+double per_cosine(double alpha, double mu, Compute compute) {
     thread_local double kept_alpha = -1.0, kept_mu = -1.0, kept = 0.0;
-    if (kept_alpha != alpha || kept_mu != mu_o) {
+    if (kept_alpha != alpha || kept_mu != mu) {
         kept = compute();
         kept_alpha = alpha;
-        kept_mu = mu_o;
+        kept_mu = mu;
     }
     return kept;
 }

@@ -128,10 +128,16 @@ struct Frame {
     // the frame's hemisphere.
     std::vector<FrameCone> support, kink_cones;
     bool has_peak = false;
-    // Over the sphere: the polar position of wi = -wo, where the half vector
-    // is undefined and f has a direction-dependent limit (theta_star < 0:
-    // none).
-    double theta_star = -1.0, psi_star = 0.0;
+    // Points where f is not smooth, in polar coordinates (theta, psi): over
+    // the sphere wi = -wo, where the half vector is undefined and f has a
+    // direction-dependent limit, and the lobe's point kink
+    // (LobeHints::point_kink).
+    struct Point {
+        double theta, psi;
+    };
+    std::vector<Point> points;
+    // The point kink is the centre of the rings itself (theta = 0).
+    bool peak_kink = false;
     // Relative error of f from the rounding of the directions (see moments_core).
     double rel_rounding = 0.0;
 };
@@ -177,9 +183,17 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain, const 
     } else {
         fr.theta_a = kPi;
         fr.theta_end = kPi;
-        const Vec3 d{-fr.wo.x, -fr.wo.y, -fr.wo.z};
-        fr.theta_star = std::acos(std::clamp(dot(fr.p, d), -1.0, 1.0));
-        fr.psi_star = std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)));
+    }
+    auto frame_point = [&](const Vec3& d) {
+        const double theta = std::acos(std::clamp(dot(fr.p, d), -1.0, 1.0));
+        if (theta <= 1e-12) fr.peak_kink = true;
+        else fr.points.push_back({theta, std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)))});
+    };
+    if (!fr.hemisphere) frame_point({-fr.wo.x, -fr.wo.y, -fr.wo.z});
+    if (h.point_kink) {
+        const Vec3 k = *h.point_kink;
+        const double kl = std::sqrt(dot(k, k));
+        frame_point({k.x / kl, k.y / kl, (fr.below ? -k.z : k.z) / kl});
     }
     auto frame_cone = [&](const LobeCone& c) {
         const double dl = std::sqrt(dot(c.axis, c.axis));
@@ -242,7 +256,7 @@ struct RingIntegrand {
 // as twice [0, psi_max]) to the absolute tolerance budget / weight, or to
 // kMaxInnerRelTol of its size if that is tighter, but not below
 // kTailFraction of the budget: {moments, error estimate}. cut_scratch has
-// room for 4 + fr.kink_cones.size() values.
+// room for 2 + 2 fr.points.size() + fr.kink_cones.size() values.
 Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* weights, std::size_t n,
                   double theta, double budget, double weight, int max_intervals, int* evaluations,
                   std::vector<double>& cut_scratch) {
@@ -298,21 +312,23 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     opt.max_intervals = max_intervals;
     // psi -> psi' (tan(psi') = tan(psi) / rho, both in [0, pi]).
     auto to_psi1 = [rho](double psi) { return std::atan2(std::sin(psi), rho * std::cos(psi)); };
-    // Start from one panel, or, on the sphere next to the point wi = -wo,
-    // from panels that isolate it (the ring passes within |theta -
-    // theta_star| of it, where f turns over an arc of about that length).
-    // The cuts go in the caller's scratch (room for 4 + one per kink cone):
-    // a ring is integrated millions of times per table, and an allocation
-    // per ring is most of the cost in a sanitized build.
+    // Start from one panel, or, next to a point where f is not smooth (on
+    // the sphere wi = -wo, or the lobe's point kink), from panels that
+    // isolate it (the ring passes within |theta - theta_point| of it, where
+    // f turns over an arc of about that length). The cuts go in the
+    // caller's scratch (room for 2 + two per point + one per kink cone): a
+    // ring is integrated millions of times per table, and an allocation per
+    // ring is most of the cost in a sanitized build.
     double* const cuts = cut_scratch.data();
     std::size_t ncuts = 0;
     cuts[ncuts++] = begin;
-    if (fr.theta_star >= 0.0 && sin_t > 0.0) {
-        const double half = 2.0 * std::abs(theta - fr.theta_star) / sin_t;
+    for (const Frame::Point& pt : fr.points) {
+        if (!(sin_t > 0.0)) break;
+        const double half = 2.0 * std::abs(theta - pt.theta) / sin_t;
         if (half < 0.25 * kPi)
-            for (double psi : {fr.psi_star - half, fr.psi_star + half}) {
+            for (double psi : {pt.psi - half, pt.psi + half}) {
                 const double v = to_psi1(psi);
-                if (psi > 0.0 && psi < kPi && v > cuts[ncuts - 1] && v < end) cuts[ncuts++] = v;
+                if (psi > 0.0 && psi < kPi && v > begin && v < end) cuts[ncuts++] = v;
             }
     }
     for (const FrameCone& k : fr.kink_cones) {
@@ -374,12 +390,12 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
         double theta;
         bool kink;
     };
-    std::vector<Point> pts{{0.0, false}, {fr.theta_end, (fr.hemisphere || !fr.support.empty()) && fr.theta_end < kPi}};
+    std::vector<Point> pts{{0.0, fr.peak_kink}, {fr.theta_end, (fr.hemisphere || !fr.support.empty()) && fr.theta_end < kPi}};
     auto add_point = [&](double t, bool kink) {
         if (t > 0.0 && t < fr.theta_end) pts.push_back({t, kink});
     };
     if (fr.hemisphere) add_point(fr.theta_a, true);
-    if (fr.theta_star >= 0.0) add_point(fr.theta_star, true);
+    for (const Frame::Point& pt : fr.points) add_point(pt.theta, true);
     // Where the rings start or stop crossing a cone (they touch it there),
     // and, over a hemisphere, the ring through the points where the cone's
     // edge meets the horizon (w = (cos phi, sin phi, 0) with w.d = cos beta):
@@ -416,7 +432,7 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
     outer_opt.max_intervals = opt.max_intervals;
     const double inner_budget = 0.25 * opt.abs_tol / static_cast<double>(pieces);
     // The rings' cuts, one at a time (see ring_integral).
-    std::vector<double> cut_scratch(4 + fr.kink_cones.size());
+    std::vector<double> cut_scratch(2 + 2 * fr.points.size() + fr.kink_cones.size());
     int evaluations = 0;
 
     for (std::size_t i = 0; i < pieces; ++i) {
@@ -432,14 +448,19 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
         // however small it is. About the normal (no peak, w = aspect = 1):
         // every piece below w in s (a sheen's pieces there start at its
         // mirror ring, and take several times longer in ln(theta)).
-        const bool in_s = (lo == 0.0 || !fr.has_peak) && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
-        const double v0 = in_s ? lo * lo : std::log(lo), v1 = in_s ? hi * hi : std::log(hi);
+        const bool in_theta = lo == 0.0 && fr.peak_kink;
+        const bool in_s = !in_theta && (lo == 0.0 || !fr.has_peak) && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
+        const double v0 = in_theta ? lo : in_s ? lo * lo : std::log(lo);
+        const double v1 = in_theta ? hi : in_s ? hi * hi : std::log(hi);
         const double len = v1 - v0;
         auto integrand = [&](double u) -> std::array<double, kMaxWeights + 1> {
             const std::array<double, 2> m = map(u);
             const double v = v0 + len * m[0];
             double theta, dw;  // dw: solid angle per unit v and unit psi
-            if (in_s) {
+            if (in_theta) {
+                theta = v;
+                dw = std::sin(theta);
+            } else if (in_s) {
                 theta = std::sqrt(v);
                 dw = theta > 0.0 ? 0.5 * std::sin(theta) / theta : 0.5;
             } else {
@@ -453,7 +474,7 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
             for (double& x : r) x *= weight;
             return r;
         };
-        const int panels = in_s ? 1 : std::max(1, static_cast<int>(std::ceil(len / kLnPanelWidth)));
+        const int panels = in_s || in_theta ? 1 : std::max(1, static_cast<int>(std::ceil(len / kLnPanelWidth)));
         const Estimate<kMaxWeights + 1> e = integrate_adaptive_panels<kMaxWeights + 1>(integrand, 0.0, 1.0, panels,
                                                                                        outer_opt);
         for (std::size_t k = 0; k < n; ++k) {

@@ -19,7 +19,7 @@ namespace {
 // mu_o changes. The same value as Beckmann::lambda(mu_o), at the cost of one
 // erfc per view instead of one per evaluation.
 double view_lambda(const Beckmann& b, double mu_o) {
-    return per_view(b.alpha, mu_o, [&] { return b.lambda(mu_o); });
+    return per_cosine(b.alpha, mu_o, [&] { return b.lambda(mu_o); });
 }
 }  // namespace
 

@@ -53,18 +53,21 @@ double CharlieLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (!(len > 0.0)) return 0.0;
     const double d = charlie_.D(s.z / len);
     if (shadowing_ == SheenShadowing::neubelt) return d * neubelt_visibility(wo.z, wi.z);
-    const double lambda_o = per_view(charlie_.alpha, wo.z, [&] { return fit_.lambda(wo.z); });
-    const double g = 1.0 / (1.0 + lambda_o + fit_.lambda_light(wi.z, shadowing_ == SheenShadowing::estevez_kulla_soft));
+    const double lambda_o = per_cosine(charlie_.alpha, wo.z, [&] { return fit_.lambda(wo.z); });
+    // About the normal (hints) a ring of the generic path has one wi.z.
+    const double lambda_i = shadowing_ == SheenShadowing::estevez_kulla_soft
+                                ? per_cosine(charlie_.alpha, wi.z, [&] { return fit_.lambda_light(wi.z, true); })
+                                : per_cosine(charlie_.alpha, wi.z, [&] { return fit_.lambda(wi.z); });
+    const double g = 1.0 / (1.0 + lambda_o + lambda_i);
     return d * g / (4.0 * wo.z * wi.z);
 }
 
 LobeHints CharlieLobe::hints(const Vec3& wo) const {
     LobeHints h;
     // D = c sin(theta_h)^(1/alpha) is not smooth where h is the normal, at
-    // the mirror direction of wo (|theta_h|^(1/alpha) there; a kink as alpha
-    // tends to 1): the ring through it is a break point, and the point itself
-    // an end of the ring's azimuth range.
-    h.kinks = {std::acos(std::clamp(wo.z, -1.0, 1.0))};
+    // the mirror direction of wo: |x|^(1/alpha) about that point (a cusp as
+    // alpha tends to 1).
+    h.point_kink = Vec3{-wo.x, -wo.y, wo.z};
     // Lambda's second derivative jumps at mu_i = 1/2 (a cone about the normal).
     if (shadowing_ != SheenShadowing::neubelt) h.kink_cones = {LobeCone{{0.0, 0.0, 1.0}, kPi / 3.0}};
     return h;
