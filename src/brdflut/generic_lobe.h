@@ -32,7 +32,7 @@
 // cone. The theta axis is split at theta_a, at the width w and the narrow
 // width aspect w (below), at every declared kink and where the rings touch
 // a declared cone; a declared point kink (a point zero or cusp of f) is a
-// break of theta, and a ring that passes near it is cut at psi about it.
+// break of theta, and a ring that passes near one is cut at psi about it.
 // The piece from the peak up to aspect w is integrated in
 // s = theta^2 (uniform in area near the peak), every other piece in
 // ln(theta): a lobe of width w, or its tail, then takes the same number of
@@ -87,7 +87,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "brdflut/math.h"
@@ -119,15 +118,15 @@ struct LobeHints {
     double width = 1.0;
     // Width across that plane over the width in it, in (0, 1].
     double aspect = 1.0;
-    // A direction (unit, in the x-z plane, on the lobe's side of the
+    // Directions (unit, in the x-z plane, on the lobe's side of the
     // horizon) where f has a point singularity: a zero or a cusp that goes
     // as |angle|^q with q not an even integer (a Charlie sheen's
     // sin(theta_h)^(1/alpha) at the mirror direction, where h is the
-    // normal). The ring through it is a break point, the rings next to it
-    // are cut about it, and at the centre of the rings (the peak, or the
+    // normal). The ring through each is a break point, the rings next to
+    // it are cut about it, and at the centre of the rings (the peak, or the
     // normal for a lobe without one) the first piece is integrated in
     // theta, flattened there, not in s.
-    std::optional<Vec3> point_kink;
+    std::vector<Vec3> point_kinks;
     // Polar angles about the peak (radians) where f has a kink or a jump.
     std::vector<double> kinks;
     // Cones (see LobeCone) that bound the lobe's support: f is 0 outside

@@ -130,13 +130,13 @@ struct Frame {
     bool has_peak = false;
     // Points where f is not smooth, in polar coordinates (theta, psi): over
     // the sphere wi = -wo, where the half vector is undefined and f has a
-    // direction-dependent limit, and the lobe's point kink
-    // (LobeHints::point_kink).
+    // direction-dependent limit, and the lobe's point kinks
+    // (LobeHints::point_kinks).
     struct Point {
         double theta, psi;
     };
     std::vector<Point> points;
-    // The point kink is the centre of the rings itself (theta = 0).
+    // A point kink is the centre of the rings itself (theta = 0).
     bool peak_kink = false;
     // Relative error of f from the rounding of the directions (see moments_core).
     double rel_rounding = 0.0;
@@ -190,8 +190,7 @@ Frame make_frame(const GenericLobe& lobe, double mu_o, LobeDomain domain, const 
         else fr.points.push_back({theta, std::abs(std::atan2(dot(fr.e2, d), dot(fr.e1, d)))});
     };
     if (!fr.hemisphere) frame_point({-fr.wo.x, -fr.wo.y, -fr.wo.z});
-    if (h.point_kink) {
-        const Vec3 k = *h.point_kink;
+    for (const Vec3& k : h.point_kinks) {
         const double kl = std::sqrt(dot(k, k));
         frame_point({k.x / kl, k.y / kl, (fr.below ? -k.z : k.z) / kl});
     }
@@ -313,7 +312,7 @@ Row ring_integral(const GenericLobe& lobe, const Frame& fr, const MomentWeight* 
     // psi -> psi' (tan(psi') = tan(psi) / rho, both in [0, pi]).
     auto to_psi1 = [rho](double psi) { return std::atan2(std::sin(psi), rho * std::cos(psi)); };
     // Start from one panel, or, next to a point where f is not smooth (on
-    // the sphere wi = -wo, or the lobe's point kink), from panels that
+    // the sphere wi = -wo, or a point kink of the lobe), from panels that
     // isolate it (the ring passes within |theta - theta_point| of it, where
     // f turns over an arc of about that length). The cuts go in the
     // caller's scratch (room for 2 + two per point + one per kink cone): a

@@ -66,8 +66,10 @@ LobeHints CharlieLobe::hints(const Vec3& wo) const {
     LobeHints h;
     // D = c sin(theta_h)^(1/alpha) is not smooth where h is the normal, at
     // the mirror direction of wo: |x|^(1/alpha) about that point (a cusp as
-    // alpha tends to 1).
-    h.point_kink = Vec3{-wo.x, -wo.y, wo.z};
+    // alpha tends to 1). Lambda of the light is exp(2 L(1/2) - L(1 - mu_i))
+    // above mu_i = 1/2, with L's (1 - mu_i)^c: a cusp at the normal.
+    h.point_kinks = {Vec3{-wo.x, -wo.y, wo.z}};
+    if (shadowing_ != SheenShadowing::neubelt) h.point_kinks.push_back(Vec3{0.0, 0.0, 1.0});
     // Lambda's second derivative jumps at mu_i = 1/2 (a cone about the normal).
     if (shadowing_ != SheenShadowing::neubelt) h.kink_cones = {LobeCone{{0.0, 0.0, 1.0}, kPi / 3.0}};
     return h;
