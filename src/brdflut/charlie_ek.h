@@ -19,7 +19,9 @@
 //   Lambda_l(mu_i) = Lambda(mu_i)^(1 + 2 (1 - mu_i)^8)
 // on the light (incident) direction only, which makes f non-reciprocal.
 // Lambda is C1 at mu = 1/2 (the second branch reflects L about 1/2) but not
-// C2: the lobe declares the cone mu_i = 1/2 as a kink to the generic path.
+// C2: the lobe declares the cone mu_i = 1/2 as a kink to the generic path,
+// and the mirror direction (D's |theta_h|^(1/alpha)) and the normal (the
+// (1 - mu_i)^c of Lambda's second branch) as point kinks.
 //
 // The same lobe with Neubelt's visibility V = 1/(4 (mu_i + mu_o - mu_i mu_o))
 // in place of G / (4 mu_o mu_i) is the lobe of sheen_charlie_albedo (sheen.h)

@@ -446,7 +446,9 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
         // theta_a changes on the scale of theta_a, which ln(theta) resolves
         // however small it is. About the normal (no peak, w = aspect = 1):
         // every piece below w in s (a sheen's pieces there start at its
-        // mirror ring, and take several times longer in ln(theta)).
+        // mirror ring, and take several times longer in ln(theta)). A piece
+        // that starts at a point kink at the centre is taken in theta: f
+        // goes as theta^q there, which s would make s^(q/2).
         const bool in_theta = lo == 0.0 && fr.peak_kink;
         const bool in_s = !in_theta && (lo == 0.0 || !fr.has_peak) && hi <= fr.aspect * fr.w * (1.0 + 1e-12);
         const double v0 = in_theta ? lo : in_s ? lo * lo : std::log(lo);

@@ -116,7 +116,9 @@ constexpr double kMinMu = 1e-4;
 
 const char* kQuadratureRule =
     "generic lobe path (generic_lobe.h): wi in polar coordinates (theta, psi) about the normal, theta split "
-    "at the cone mu_i = 1/2 (Lambda's kink), adaptive Gauss-Kronrod (10,21) in both; E_avg: adaptive "
+    "at the cone mu_i = 1/2 (Lambda's kink) and at the rings through the mirror direction (D's cusp) and the "
+    "normal (Lambda's (1 - mu_i)^c), the rings next to those points cut about them, adaptive Gauss-Kronrod "
+    "(10,21) in both; E_avg: adaptive "
     "Gauss-Kronrod over mu, split at mu = 1/2 (Lambda(mu_o)'s kink); alpha below 1e-5 computed at 1e-5, alpha = 0 the limit 0; cos_theta below 1e-4 "
     "computed at 1e-4; error per value: QUADPACK estimate plus the integrated inner estimates";
 const char* kMcSampler = "equal mixture of the cosine-weighted hemisphere and reflected Charlie normals";
