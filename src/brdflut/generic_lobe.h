@@ -3,9 +3,9 @@
 // A lobe is declared by f(wo, wi) (cosine not included) and, optionally, by
 // hints on its shape: the direction where it peaks (the mirror direction of
 // a glossy lobe), its angular width there, how much narrower it is across
-// the plane of the peak and the normal, and the polar angles about the peak
-// where f has a kink. From that alone this file computes, with no numerics
-// specific to the lobe:
+// the plane of the peak and the normal, and the cones and points where f
+// has a kink. From that alone this file computes, with no numerics specific
+// to the lobe:
 //
 //   M_k(mu_o) = integral over wi.z > 0 of f(wo, wi) w_k(wo.h) cos(theta_i) dw_i
 //
@@ -30,8 +30,8 @@
 // wi.d = cos(theta) p.d + sin(theta) cos(psi) e1.d, linear in cos(psi), as
 // the horizon does), and a ring is split where it crosses a declared kink
 // cone. The theta axis is split at theta_a, at the width w and the narrow
-// width aspect w (below), at every declared kink and where the rings touch
-// a declared cone; a declared point kink (a point zero or cusp of f) is a
+// width aspect w (below) and where the rings touch a declared cone; a
+// declared point kink (a point zero or cusp of f) is a
 // break of theta, and a ring that passes near one is cut at psi about it.
 // The piece from the peak up to aspect w is integrated in
 // s = theta^2 (uniform in area near the peak), every other piece in
@@ -65,7 +65,7 @@
 // transmission lobe's moment of weight 1 (its albedo) is the one with a
 // meaning. A lobe without a peak is then taken in coordinates about -z.
 // Hints are those of the lobe as it is, below the horizon (width and
-// aspect of the refracted peak, kinks about it). The Monte Carlo estimates
+// aspect of the refracted peak, cones about it). The Monte Carlo estimates
 // cover the upper hemisphere only.
 //
 // Requirements on the lobe: f is even in wi.y for wo in the x-z plane (an
@@ -127,8 +127,6 @@ struct LobeHints {
     // normal for a lobe without one) the first piece is integrated in
     // theta, flattened there, not in s.
     std::vector<Vec3> point_kinks;
-    // Polar angles about the peak (radians) where f has a kink or a jump.
-    std::vector<double> kinks;
     // Cones (see LobeCone) that bound the lobe's support: f is 0 outside
     // any of them. Each ring is clipped to them as to the horizon, so a lobe
     // that ends inside the domain (a refraction lobe ends at the largest

@@ -384,7 +384,8 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
                                    std::size_t n, const GenericOptions& opt) {
     Estimate<kMaxWeights> out;
 
-    // Break points of theta: the horizon clip, the width, the kinks.
+    // Break points of theta: the horizon clip, the width, the points and
+    // the cones.
     struct Point {
         double theta;
         bool kink;
@@ -411,7 +412,6 @@ Estimate<kMaxWeights> moments_pass(const GenericLobe& lobe, const Frame& fr, con
         }
     add_point(fr.w, false);
     add_point(fr.aspect * fr.w, false);
-    for (double k : lobe.hints(fr.wo).kinks) add_point(k, true);
     std::sort(pts.begin(), pts.end(), [](const Point& a, const Point& b) { return a.theta < b.theta; });
     std::vector<Point> merged;
     for (const Point& p : pts) {
