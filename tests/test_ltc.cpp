@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "brdflut/catalogue.h"
+#include "brdflut/charlie_ek.h"
 #include "brdflut/generate.h"
 #include "brdflut/ggx_integrals.h"
 #include "brdflut/ltc.h"
@@ -18,9 +19,11 @@
 #include "brdflut/ltc_report.h"
 #include "brdflut/quadrature.h"
 #include "brdflut/verify.h"
+#include "brdflut/zeltner_sheen.h"
 #include "brdflut/exr.h"
 #include "brdflut/formats.h"
 #include "brdflut/lut.h"
+#include "integrate/ltc_quadrature.h"
 #include "integrate/ltc_simd.h"
 #include "test_support.h"
 
@@ -452,6 +455,45 @@ TEST(LtcVerify, ClosedFormAndLocalMinimumChecksPass) {
 // squares of unit directions, none of them a light of the report's bank; at
 // grazing view the peak lights straddle the horizon (the case the light
 // term is for) and the light beyond the mirror direction lies below it.
+// The exact light of a polygon (what the error reports and the fit's light
+// term hold an LTC to) against the lobe's albedo by the catalogue's own
+// route: four quadrilaterals from the normal to points below the horizon
+// tile the upper hemisphere, so their lights add up to n0. Each ray of a
+// quadrant ends at the horizon (where the Estevez-Kulla Lambda goes as
+// mu_i^c and the ray is integrated in a flattened variable), and the
+// quadrants are turned by 45 degrees so that the Charlie lobes' point kink
+// at the mirror direction lies inside one of them.
+TEST(LtcLights, ExactLightsOfQuadrantsTilingTheHemisphereAddUpToTheAlbedo) {
+    auto unit = [](const Vec3& v) {
+        const double l = std::sqrt(dot(v, v));
+        return Vec3{v.x / l, v.y / l, v.z / l};
+    };
+    std::vector<LtcLobe> lobes;
+    for (double alpha : {0.05, 0.3, 1.0})
+        for (double mu : {0.02, 0.35, 0.9}) {
+            lobes.emplace_back(mu, alpha, Visibility::height_correlated);
+            lobes.emplace_back(LtcLobeKind::charlie_sheen, mu, alpha);
+            for (SheenShadowing sh : {SheenShadowing::estevez_kulla, SheenShadowing::estevez_kulla_soft})
+                lobes.emplace_back(std::make_shared<const CharlieLobe>(alpha, sh), mu, alpha, 1, 1e-11);
+            lobes.emplace_back(std::make_shared<const ZeltnerApproxSheenLobe>(alpha), mu, alpha, 2, 1e-11);
+        }
+    for (const LtcLobe& lobe : lobes) {
+        const LtcNorms norms = ltc_norms(lobe);
+        const ltc_detail::Setup s = ltc_detail::make_setup(lobe, norms.n0, 28, 16);
+        double sum = 0.0;
+        for (int q = 0; q < 4; ++q) {
+            auto below = [&](double deg) {
+                const double a = (deg + 45.0 + 90.0 * q) * kPi / 180.0;
+                return unit(Vec3{std::cos(a), std::sin(a), -0.2});
+            };
+            const LtcLight quadrant{"quadrant", {Vec3{0.0, 0.0, 1.0}, below(0.0), below(45.0), below(90.0)}};
+            sum += ltc_detail::polygon_light(lobe, s.frame, quadrant, 1e-9 * norms.n0);
+        }
+        EXPECT_NEAR(sum, norms.n0, 2e-9 * norms.n0 + norms.n0_error)
+            << to_string(lobe.kind) << " alpha " << lobe.param << " mu " << lobe.mu_o;
+    }
+}
+
 TEST(LtcLights, FitBankIsItsOwnAndStraddlesTheHorizonAtGrazingView) {
     for (double mu : {kLtcMinMu, 0.2, 0.39}) {
         const std::vector<LtcLight> fit = ltc_fit_light_bank(mu), report = ltc_light_bank(mu);

@@ -77,6 +77,11 @@ struct LtcLobe {
     // about it only; other lobes (retro-reflecting diffuse, sheen rings
     // about the normal) are scanned over the whole plane of incidence.
     bool peaks_near_mirror() const { return peaked_; }
+    // Directions where f has a point singularity (a generic lobe's
+    // LobeHints::point_kinks; the Charlie lobe's mirror direction, where D
+    // = sin(theta_h)^(1/alpha) has its zero): the exact light of a polygon
+    // (ltc_quadrature.h, polygon_light) cuts its rays about them.
+    std::vector<Vec3> point_kinks() const;
 
     // The generic kind's lobe, its identity and its norms' tolerance.
     std::shared_ptr<const GenericLobe> generic;

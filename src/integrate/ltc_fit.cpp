@@ -427,6 +427,16 @@ double LtcLobe::operator()(const Vec3& wi) const {
     return 0.0;
 }
 
+std::vector<Vec3> LtcLobe::point_kinks() const {
+    switch (kind) {
+        case LtcLobeKind::charlie_sheen: return {Vec3{-wo.x, -wo.y, wo.z}};
+        case LtcLobeKind::generic: return generic->hints(wo).point_kinks;
+        case LtcLobeKind::ggx:
+        case LtcLobeKind::eon: return {};
+    }
+    return {};
+}
+
 LtcNorms ltc_norms(const LtcLobe& lobe) {
     LtcNorms n;
     switch (lobe.kind) {

@@ -279,6 +279,15 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
             add_break(add(a, scale(add(b, scale(a, -1.0)), t)));
         }
     }
+    // The lobe's point singularities off the frame's axis (where every ray
+    // starts): the ray through each is a break of phi, and every ray is cut
+    // where it passes closest to each.
+    std::vector<Vec3> kinks;
+    for (const Vec3& v : lobe.point_kinks())
+        if (v.z > 0.0 && dot(v, f.axis) < 1.0 - 1e-12) {
+            kinks.push_back(v);
+            add_break(v);
+        }
     std::sort(breaks.begin(), breaks.end());
     AdaptiveOptions outer;
     outer.abs_tol = 0.5 * abs_tol / static_cast<double>(breaks.size() - 1);
@@ -286,19 +295,44 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
     AdaptiveOptions inner;
     inner.abs_tol = 0.5 * abs_tol / kTwoPi;
     inner.max_intervals = 100;
+    std::vector<double> cuts;
     auto ray = [&](double phi) {
         const Vec3 t = f.tangent(phi);
         const double kk = f.k(phi);
         double lo = 0.0, hi = kPi;
-        for (const Vec3& c : e) clip_interval(dot(c, f.axis), dot(c, t), lo, hi);
+        for (std::size_t i = 0; i + 1 < e.size(); ++i) clip_interval(dot(e[i], f.axis), dot(e[i], t), lo, hi);
+        const double hi_in_light = hi;
+        clip_interval(dot(e.back(), f.axis), dot(e.back(), t), lo, hi);
         if (!(hi > lo)) return std::array<double, 1>{0.0};
-        const double u0 = f.u_of_beta(lo, kk), u1 = f.u_of_beta(hi, kk);
-        const Estimate<1> in = integrate_adaptive<1>(
-            [&](double u) {
-                return std::array<double, 1>{lobe(f.direction_at(u, kk, t)) * f.measure(u, kk)};
-            },
-            u0, u1, inner);
-        return in.value;
+        // Where the horizon ends the ray, the lobe's shadowing often goes
+        // as a fractional power of cos(theta_i) there (the Estevez-Kulla
+        // Lambda's x^c): the ray is integrated in w with u = u1 - (u1 -
+        // u0)(1 - w)^2, which turns (u1 - u)^c into (1 - w)^(2c + 1).
+        const bool at_horizon = hi < hi_in_light;
+        const double ua = f.u_of_beta(lo, kk), len = f.u_of_beta(hi, kk) - ua;
+        auto g = [&](double w) {
+            const double r = 1.0 - w;
+            const double x = at_horizon ? 1.0 - r * r : w, jac = at_horizon ? 2.0 * r : 1.0;
+            const double u = ua + len * x;
+            return std::array<double, 1>{lobe(f.direction_at(u, kk, t)) * f.measure(u, kk) * len * jac};
+        };
+        cuts.clear();
+        for (const Vec3& v : kinks) {
+            const double at = std::atan2(dot(v, t), dot(v, f.axis));
+            if (at > lo && at < hi) {
+                const double x = (f.u_of_beta(at, kk) - ua) / len;
+                cuts.push_back(at_horizon ? 1.0 - std::sqrt(std::max(0.0, 1.0 - x)) : x);
+            }
+        }
+        if (cuts.empty()) return integrate_adaptive<1>(g, 0.0, 1.0, inner).value;
+        std::sort(cuts.begin(), cuts.end());
+        cuts.insert(cuts.begin(), 0.0);
+        cuts.push_back(1.0);
+        std::vector<detail::Interval<1>> heap = detail::interval_heap<1>(cuts.size() - 1, inner);
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
+            if (cuts[k + 1] > cuts[k])
+                heap.push_back(detail::kronrod_panel<1>(g, cuts[k], cuts[k + 1], inner.controlled, inner.rule));
+        return detail::adaptive_from<1>(g, std::move(heap), inner, Estimate<1>{}).value;
     };
     double sum = 0.0;
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
