@@ -175,8 +175,8 @@ TEST(LtcFit, EveryFittedTexelIsALocalMinimumOfTheObjective) {
 }
 
 TEST(LtcFit, EveryObjectivePathGivesTheSameBits) {
-    // The objective sums its grid two nodes at a time (SSE2) or one at a
-    // time; each must give the same bits, at the fit and at parameters
+    // The objective sums its grid four nodes at a time (AVX2), two (SSE2)
+    // or one at a time; each must give the same bits, at the fit and at parameters
     // around it, so that the fits are the same whichever path runs. Lobes:
     // GGX smooth and grazing, smooth, rough at normal view, the sheen and
     // EON lobes; on the draft grid and on one padded to whole lanes.
@@ -205,14 +205,15 @@ TEST(LtcFit, EveryObjectivePathGivesTheSameBits) {
         return std::make_pair(fits, values);
     };
     const auto one = run(1);
-    if (detail::set_ltc_objective_simd_width(2) == 2) {
-        const auto two = run(2);
+    for (int width : {2, 4}) {
+        if (detail::set_ltc_objective_simd_width(width) != width) continue;
+        const auto wide = run(width);
         for (std::size_t n = 0; n < one.first.size(); ++n) {
-            EXPECT_EQ(two.first[n].params, one.first[n].params) << "lobe " << n;
-            EXPECT_EQ(two.first[n].evaluations, one.first[n].evaluations) << "lobe " << n;
+            EXPECT_EQ(wide.first[n].params, one.first[n].params) << "width " << width << ", lobe " << n;
+            EXPECT_EQ(wide.first[n].evaluations, one.first[n].evaluations) << "width " << width << ", lobe " << n;
         }
         for (std::size_t n = 0; n < one.second.size(); ++n)
-            EXPECT_EQ(two.second[n], one.second[n]) << "point " << n;
+            EXPECT_EQ(wide.second[n], one.second[n]) << "width " << width << ", point " << n;
     }
     EXPECT_EQ(detail::set_ltc_objective_simd_width(widest), widest);
 }

@@ -67,6 +67,8 @@
 #include "integrate/ltc_quadrature.h"
 #include "integrate/ltc_simd.h"
 
+#include "integrate/simd_lanes.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -157,9 +159,10 @@ Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
 // w = 0, its largest 0.068 and 0.073 (EON 0.0043 and 0.0046).
 
 // The three sums of the objective over the grid, node i in lane i % 4 and
-// the lanes added as (l0 + l1) + (l2 + l3): the SSE2 path takes two lanes
-// per register, the portable one a lane at a time, by the same operations
-// in the same order, so the fit does not depend on which one runs. (Two
+// the lanes added as (l0 + l1) + (l2 + l3): the AVX2 path takes the four
+// lanes in one register, the SSE2 path two per register, the portable one a
+// lane at a time, by the same operations in the same order, so the fit does
+// not depend on which one runs. (Two
 // divisions per node, and two nodes per division with SSE2: the divisions
 // are most of the fit's time.)
 struct ObjectiveSums {
@@ -225,14 +228,69 @@ ObjectiveSums objective_sums_sse2(const SphereGrid& g, const Mat3& minv, double 
 }
 #endif
 
-#if defined(__SSE2__)
-constexpr int kWidestObjective = 2;
-#else
-constexpr int kWidestObjective = 1;
+}  // namespace
+
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+// The four lanes in one register: compiled for AVX2 whatever the build's
+// target and called only when the processor has it. AVX2 alone implies no
+// fused multiply-add, so each lane rounds as in the SSE2 and portable sums.
+BRDFLUT_AVX2_BEGIN
+namespace {
+ObjectiveSums objective_sums_avx2(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
+    const auto& m = minv.m;
+    const __m256d m00 = _mm256_set1_pd(m[0][0]), m02 = _mm256_set1_pd(m[0][2]), m20 = _mm256_set1_pd(m[2][0]),
+                  m22 = _mm256_set1_pd(m[2][2]), det = _mm256_set1_pd(det_over_pi), zero = _mm256_setzero_pd(),
+                  sign = _mm256_set1_pd(-0.0);
+    __m256d heitz = zero, tri = zero, inside = zero;
+    for (std::size_t k = 0; k < g.size(); k += kObjectiveLanes) {
+        const __m256d x = _mm256_loadu_pd(&g.x[k]), y = _mm256_loadu_pd(&g.y[k]), z = _mm256_loadu_pd(&g.z[k]);
+        const __m256d px = _mm256_add_pd(_mm256_mul_pd(m00, x), _mm256_mul_pd(m02, z));
+        const __m256d pz = _mm256_add_pd(_mm256_mul_pd(m20, x), _mm256_mul_pd(m22, z));
+        const __m256d l2 =
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, px), _mm256_mul_pd(y, y)), _mm256_mul_pd(pz, pz));
+        const __m256d d = _mm256_and_pd(_mm256_cmp_pd(pz, zero, _CMP_GT_OQ),
+                                        _mm256_div_pd(_mm256_mul_pd(pz, det), _mm256_mul_pd(l2, l2)));
+        const __m256d p = _mm256_loadu_pd(&g.p[k]), w = _mm256_loadu_pd(&g.w[k]);
+        const __m256d on = _mm256_cmp_pd(p, zero, _CMP_GT_OQ);
+        const __m256d e = _mm256_andnot_pd(sign, _mm256_sub_pd(p, d)), den = _mm256_add_pd(p, d);
+        const __m256d t = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(w, e), e), den);
+        const __m256d wd = _mm256_mul_pd(w, d);
+        heitz = _mm256_add_pd(heitz, _mm256_or_pd(_mm256_and_pd(on, _mm256_mul_pd(t, e)),
+                                                  _mm256_andnot_pd(on, _mm256_mul_pd(wd, d))));
+        tri = _mm256_add_pd(tri, _mm256_and_pd(on, t));
+        inside = _mm256_add_pd(inside, _mm256_and_pd(on, wd));
+    }
+    auto lanes = [](__m256d v) {
+        double a[4];
+        _mm256_storeu_pd(a, v);
+        return (a[0] + a[1]) + (a[2] + a[3]);
+    };
+    return {lanes(heitz), lanes(tri), lanes(inside)};
+}
+}  // namespace
+BRDFLUT_AVX2_END
 #endif
+
+namespace {
+
+int widest_objective() {
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx2")) return 4;
+#endif
+#if defined(__SSE2__)
+    return 2;
+#else
+    return 1;
+#endif
+}
+const int kWidestObjective = widest_objective();
 int g_objective_width = kWidestObjective;
 
 ObjectiveSums objective_sums(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS)
+    if (g_objective_width == 4) return objective_sums_avx2(g, minv, det_over_pi);
+#endif
 #if defined(__SSE2__)
     if (g_objective_width == 2) return objective_sums_sse2(g, minv, det_over_pi);
 #endif
@@ -609,7 +667,8 @@ std::vector<LtcLight> ltc_fit_light_bank(double mu) {
 namespace detail {
 int ltc_objective_simd_width() { return g_objective_width; }
 int set_ltc_objective_simd_width(int width) {
-    g_objective_width = std::clamp(width, 1, kWidestObjective);
+    const int w = std::min(width, kWidestObjective);
+    g_objective_width = w >= 4 ? 4 : w >= 2 ? 2 : 1;
     return g_objective_width;
 }
 }  // namespace detail
