@@ -106,3 +106,17 @@ inline void store_pairs(double* y, V a, V b) {
 }  // namespace brdflut::simd::avx2
 BRDFLUT_AVX2_END
 #endif
+
+// Plain loops that the compiler vectorizes (dense matrix products and
+// eliminations), compiled twice, for AVX2 and for the build's target, the
+// one the processor has chosen when the program loads (target_clones).
+// Neither clone fuses a multiply and an add, and a vectorized loop keeps
+// each element's operations in their order, so both give the same bits.
+#if defined(BRDFLUT_HAVE_AVX2_KERNELS) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define BRDFLUT_WIDEST_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+#endif
+#if !defined(BRDFLUT_WIDEST_CLONES)
+#define BRDFLUT_WIDEST_CLONES
+#endif

@@ -11,6 +11,7 @@
 #include "brdflut/quadrature.h"
 #include "brdflut/random.h"
 #include "brdflut/zeltner_sheen.h"
+#include "integrate/simd_lanes.h"
 
 namespace brdflut {
 namespace {
@@ -545,21 +546,36 @@ SheenVolumeEstimate sheen_volume_reflectance_mc(double alpha, double mu, int max
 namespace brdflut {
 namespace {
 
-// C = A B for n x n row-major matrices.
-void multiply(const std::vector<double>& A, const std::vector<double>& B, std::vector<double>& C, std::size_t n) {
-    std::fill(C.begin(), C.end(), 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < n; ++k) {
-            const double a = A[i * n + k];
-            if (a == 0.0) continue;
-            const double* b = &B[k * n];
-            double* c = &C[i * n];
-            for (std::size_t j = 0; j < n; ++j) c[j] += a * b[j];
+// C = A B for n x n row-major matrices. Each C[i][j] sums A[i][k] B[k][j]
+// over k in order (a zero A[i][k] adds nothing), eight columns at a time
+// held in registers across k.
+BRDFLUT_WIDEST_CLONES void multiply(const std::vector<double>& A, const std::vector<double>& B,
+                                   std::vector<double>& C, std::size_t n) {
+    constexpr std::size_t kColumns = 16;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double* a = &A[i * n];
+        double* c = &C[i * n];
+        std::size_t j0 = 0;
+        for (; j0 + kColumns <= n; j0 += kColumns) {
+            double acc[kColumns] = {};
+            for (std::size_t k = 0; k < n; ++k) {
+                if (a[k] == 0.0) continue;
+                const double* b = &B[k * n + j0];
+                for (std::size_t q = 0; q < kColumns; ++q) acc[q] += a[k] * b[q];
+            }
+            for (std::size_t q = 0; q < kColumns; ++q) c[j0 + q] = acc[q];
         }
+        for (std::size_t j = j0; j < n; ++j) {
+            double acc = 0.0;
+            for (std::size_t k = 0; k < n; ++k)
+                if (a[k] != 0.0) acc += a[k] * B[k * n + j];
+            c[j] = acc;
+        }
+    }
 }
 
 // Solves X Z = Y in place (Y becomes Z; X its LU factors), partial pivoting.
-void solve(std::vector<double>& X, std::vector<double>& Y, std::size_t n) {
+BRDFLUT_WIDEST_CLONES void solve(std::vector<double>& X, std::vector<double>& Y, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k) {
         std::size_t p = k;
         for (std::size_t i = k + 1; i < n; ++i)
@@ -577,11 +593,26 @@ void solve(std::vector<double>& X, std::vector<double>& Y, std::size_t n) {
             for (std::size_t j = 0; j < n; ++j) Y[i * n + j] -= f * Y[k * n + j];
         }
     }
+    // Back substitution, each Y[k][j] less X[k][i] Y[i][j] over i in order,
+    // sixteen columns at a time held in registers across i.
+    constexpr std::size_t kColumns = 16;
     for (std::size_t k = n; k-- > 0;) {
-        for (std::size_t j = 0; j < n; ++j) {
-            double v = Y[k * n + j];
-            for (std::size_t i = k + 1; i < n; ++i) v -= X[k * n + i] * Y[i * n + j];
-            Y[k * n + j] = v / X[k * n + k];
+        const double* x = &X[k * n];
+        double* y = &Y[k * n];
+        std::size_t j0 = 0;
+        for (; j0 + kColumns <= n; j0 += kColumns) {
+            double v[kColumns];
+            for (std::size_t q = 0; q < kColumns; ++q) v[q] = y[j0 + q];
+            for (std::size_t i = k + 1; i < n; ++i) {
+                const double* yi = &Y[i * n + j0];
+                for (std::size_t q = 0; q < kColumns; ++q) v[q] -= x[i] * yi[q];
+            }
+            for (std::size_t q = 0; q < kColumns; ++q) y[j0 + q] = v[q] / x[k];
+        }
+        for (std::size_t j = j0; j < n; ++j) {
+            double v = y[j];
+            for (std::size_t i = k + 1; i < n; ++i) v -= x[i] * Y[i * n + j];
+            y[j] = v / x[k];
         }
     }
 }
