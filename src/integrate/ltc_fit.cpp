@@ -66,12 +66,7 @@
 #include "brdflut/sheen_integrals.h"
 #include "integrate/ltc_quadrature.h"
 #include "integrate/ltc_simd.h"
-
 #include "integrate/simd_lanes.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace brdflut {
 
@@ -159,114 +154,45 @@ Setup make_fit_setup(const LtcLobe& lobe, double n0, const LtcFitOptions& opt) {
 // w = 0, its largest 0.068 and 0.073 (EON 0.0043 and 0.0046).
 
 // The three sums of the objective over the grid, node i in lane i % 4 and
-// the lanes added as (l0 + l1) + (l2 + l3): the AVX2 path takes the four
-// lanes in one register, the SSE2 path two per register, the portable one a
-// lane at a time, by the same operations in the same order, so the fit does
-// not depend on which one runs. (Two
-// divisions per node, and two nodes per division with SSE2: the divisions
-// are most of the fit's time.)
+// the lanes added as (l0 + l1) + (l2 + l3), written once over the lane
+// types (ltc_objective_kernel.inc): AVX2 takes the four lanes in one
+// register, SSE2 two per register, the scalar path one at a time, by the
+// same operations in the same order, so the fit does not depend on which
+// one runs. (Two divisions per node: the divisions are most of the fit's
+// time.)
 struct ObjectiveSums {
     double heitz = 0.0, tri = 0.0, inside = 0.0;
 };
+// The grid's arrays (a whole number of lane groups long, make_grid).
+struct GridView {
+    const double *x, *y, *z, *p, *w;
+    std::size_t n;
+};
 
-ObjectiveSums objective_sums_portable(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
-    double heitz[kObjectiveLanes] = {}, tri[kObjectiveLanes] = {}, inside[kObjectiveLanes] = {};
-    for (std::size_t i = 0; i < g.size(); ++i) {
-        const std::size_t l = i % kObjectiveLanes;
-        const double d = grid_density(g, i, minv, det_over_pi);
-        const double p = g.p[i], w = g.w[i];
-        if (p > 0.0) {
-            const double e = std::abs(p - d), den = p + d;
-            const double t = w * e * e / den;
-            heitz[l] += t * e;
-            tri[l] += t;
-            inside[l] += w * d;
-        } else {
-            heitz[l] += w * d * d;
-        }
-    }
-    return {(heitz[0] + heitz[1]) + (heitz[2] + heitz[3]), (tri[0] + tri[1]) + (tri[2] + tri[3]),
-            (inside[0] + inside[1]) + (inside[2] + inside[3])};
-}
+namespace lanes_scalar {
+using simd::scalar::V;
+#include "integrate/ltc_objective_kernel.inc"
+}  // namespace lanes_scalar
 
 #if defined(__SSE2__)
-ObjectiveSums objective_sums_sse2(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
-    const auto& m = minv.m;
-    const __m128d m00 = _mm_set1_pd(m[0][0]), m02 = _mm_set1_pd(m[0][2]), m20 = _mm_set1_pd(m[2][0]),
-                  m22 = _mm_set1_pd(m[2][2]), det = _mm_set1_pd(det_over_pi), zero = _mm_setzero_pd(),
-                  sign = _mm_set1_pd(-0.0);
-    __m128d heitz[2] = {zero, zero}, tri[2] = {zero, zero}, inside[2] = {zero, zero};
-    for (std::size_t i = 0; i < g.size(); i += kObjectiveLanes) {
-        for (int h = 0; h < 2; ++h) {
-            const std::size_t k = i + 2 * static_cast<std::size_t>(h);
-            const __m128d x = _mm_loadu_pd(&g.x[k]), y = _mm_loadu_pd(&g.y[k]), z = _mm_loadu_pd(&g.z[k]);
-            const __m128d px = _mm_add_pd(_mm_mul_pd(m00, x), _mm_mul_pd(m02, z));
-            const __m128d pz = _mm_add_pd(_mm_mul_pd(m20, x), _mm_mul_pd(m22, z));
-            const __m128d l2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(px, px), _mm_mul_pd(y, y)), _mm_mul_pd(pz, pz));
-            const __m128d d =
-                _mm_and_pd(_mm_cmpgt_pd(pz, zero), _mm_div_pd(_mm_mul_pd(pz, det), _mm_mul_pd(l2, l2)));
-            const __m128d p = _mm_loadu_pd(&g.p[k]), w = _mm_loadu_pd(&g.w[k]);
-            const __m128d on = _mm_cmpgt_pd(p, zero);
-            const __m128d e = _mm_andnot_pd(sign, _mm_sub_pd(p, d)), den = _mm_add_pd(p, d);
-            // Where p = 0 the quotient may be 0 / 0: masked off (after every
-            // operation, so that no masked lane's NaN or inf reaches a sum).
-            const __m128d t = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(w, e), e), den);
-            const __m128d wd = _mm_mul_pd(w, d);
-            heitz[h] = _mm_add_pd(heitz[h], _mm_or_pd(_mm_and_pd(on, _mm_mul_pd(t, e)),
-                                                      _mm_andnot_pd(on, _mm_mul_pd(wd, d))));
-            tri[h] = _mm_add_pd(tri[h], _mm_and_pd(on, t));
-            inside[h] = _mm_add_pd(inside[h], _mm_and_pd(on, wd));
-        }
-    }
-    auto lanes = [](const __m128d* v) {
-        double a[2], b[2];
-        _mm_storeu_pd(a, v[0]);
-        _mm_storeu_pd(b, v[1]);
-        return (a[0] + a[1]) + (b[0] + b[1]);
-    };
-    return {lanes(heitz), lanes(tri), lanes(inside)};
-}
+namespace lanes_sse2 {
+using simd::sse2::V;
+#include "integrate/ltc_objective_kernel.inc"
+}  // namespace lanes_sse2
 #endif
 
 }  // namespace
 
 #if defined(BRDFLUT_HAVE_AVX2_KERNELS)
-// The four lanes in one register: compiled for AVX2 whatever the build's
-// target and called only when the processor has it. AVX2 alone implies no
-// fused multiply-add, so each lane rounds as in the SSE2 and portable sums.
+// Compiled for AVX2 whatever the build's target, and called only when the
+// processor has it. AVX2 alone implies no fused multiply-add, so each lane
+// rounds as in the SSE2 and scalar sums.
 BRDFLUT_AVX2_BEGIN
 namespace {
-ObjectiveSums objective_sums_avx2(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
-    const auto& m = minv.m;
-    const __m256d m00 = _mm256_set1_pd(m[0][0]), m02 = _mm256_set1_pd(m[0][2]), m20 = _mm256_set1_pd(m[2][0]),
-                  m22 = _mm256_set1_pd(m[2][2]), det = _mm256_set1_pd(det_over_pi), zero = _mm256_setzero_pd(),
-                  sign = _mm256_set1_pd(-0.0);
-    __m256d heitz = zero, tri = zero, inside = zero;
-    for (std::size_t k = 0; k < g.size(); k += kObjectiveLanes) {
-        const __m256d x = _mm256_loadu_pd(&g.x[k]), y = _mm256_loadu_pd(&g.y[k]), z = _mm256_loadu_pd(&g.z[k]);
-        const __m256d px = _mm256_add_pd(_mm256_mul_pd(m00, x), _mm256_mul_pd(m02, z));
-        const __m256d pz = _mm256_add_pd(_mm256_mul_pd(m20, x), _mm256_mul_pd(m22, z));
-        const __m256d l2 =
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, px), _mm256_mul_pd(y, y)), _mm256_mul_pd(pz, pz));
-        const __m256d d = _mm256_and_pd(_mm256_cmp_pd(pz, zero, _CMP_GT_OQ),
-                                        _mm256_div_pd(_mm256_mul_pd(pz, det), _mm256_mul_pd(l2, l2)));
-        const __m256d p = _mm256_loadu_pd(&g.p[k]), w = _mm256_loadu_pd(&g.w[k]);
-        const __m256d on = _mm256_cmp_pd(p, zero, _CMP_GT_OQ);
-        const __m256d e = _mm256_andnot_pd(sign, _mm256_sub_pd(p, d)), den = _mm256_add_pd(p, d);
-        const __m256d t = _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(w, e), e), den);
-        const __m256d wd = _mm256_mul_pd(w, d);
-        heitz = _mm256_add_pd(heitz, _mm256_or_pd(_mm256_and_pd(on, _mm256_mul_pd(t, e)),
-                                                  _mm256_andnot_pd(on, _mm256_mul_pd(wd, d))));
-        tri = _mm256_add_pd(tri, _mm256_and_pd(on, t));
-        inside = _mm256_add_pd(inside, _mm256_and_pd(on, wd));
-    }
-    auto lanes = [](__m256d v) {
-        double a[4];
-        _mm256_storeu_pd(a, v);
-        return (a[0] + a[1]) + (a[2] + a[3]);
-    };
-    return {lanes(heitz), lanes(tri), lanes(inside)};
-}
+namespace lanes_avx2 {
+using simd::avx2::V;
+#include "integrate/ltc_objective_kernel.inc"
+}  // namespace lanes_avx2
 }  // namespace
 BRDFLUT_AVX2_END
 #endif
@@ -287,14 +213,15 @@ int widest_objective() {
 const int kWidestObjective = widest_objective();
 int g_objective_width = kWidestObjective;
 
-ObjectiveSums objective_sums(const SphereGrid& g, const Mat3& minv, double det_over_pi) {
+ObjectiveSums objective_sums(const SphereGrid& grid, const Mat3& minv, double det_over_pi) {
+    const GridView g{grid.x.data(), grid.y.data(), grid.z.data(), grid.p.data(), grid.w.data(), grid.size()};
 #if defined(BRDFLUT_HAVE_AVX2_KERNELS)
-    if (g_objective_width == 4) return objective_sums_avx2(g, minv, det_over_pi);
+    if (g_objective_width == 4) return lanes_avx2::objective_sums(g, minv, det_over_pi);
 #endif
 #if defined(__SSE2__)
-    if (g_objective_width == 2) return objective_sums_sse2(g, minv, det_over_pi);
+    if (g_objective_width == 2) return lanes_sse2::objective_sums(g, minv, det_over_pi);
 #endif
-    return objective_sums_portable(g, minv, det_over_pi);
+    return lanes_scalar::objective_sums(g, minv, det_over_pi);
 }
 
 double objective(const SphereGrid& g, const Mat3& minv) {
