@@ -527,31 +527,50 @@ Estimate<N> adaptive_from(F& f, std::vector<Interval<N>> heap, const AdaptiveOpt
 }
 }  // namespace detail
 
-// Integrates f over [a, b]; f maps a double to std::array<double, N>.
-// Globally adaptive: the interval with the largest error is bisected until
-// the summed error of every channel is below abs_tol. The same, starting
-// from `panels` equal panels of [a, b] instead of one (QUADPACK's QAGP with
-// equally spaced break points): when the integrand is known to need several
-// panels (a long range over which it varies on a shorter scale), this saves
-// the evaluations of the coarse panels that bisection would discard.
-// panels = 1 is integrate_adaptive.
+// Integrates f over [breaks[0], breaks[count - 1]]; f maps a double to
+// std::array<double, N>. Globally adaptive from one first panel between each
+// pair of neighbouring break points (increasing; a pair that is not
+// increasing is skipped): the interval with the largest error is bisected
+// until the summed error of every channel is below abs_tol (QUADPACK's
+// QAGP). Break points go where the integrand is known not to be smooth (a
+// kink, a cusp) or to change its scale, which bisection would otherwise
+// have to find.
+template <std::size_t N, class F>
+Estimate<N> integrate_adaptive_breaks(F&& f, const double* breaks, std::size_t count,
+                                      const AdaptiveOptions& opt = {}) {
+    Estimate<N> out;
+    if (count < 2 || !(breaks[count - 1] > breaks[0])) return out;
+    const int per_panel = kronrod_points(opt.rule);
+    if (count == 2) {
+        out.evaluations = per_panel;
+        return detail::adaptive_from_one<N>(f, detail::kronrod_panel<N>(f, breaks[0], breaks[1], opt.controlled, opt.rule),
+                                            opt, out);
+    }
+    std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(count - 1, opt);
+    for (std::size_t k = 0; k + 1 < count; ++k)
+        if (breaks[k + 1] > breaks[k])
+            heap.push_back(detail::kronrod_panel<N>(f, breaks[k], breaks[k + 1], opt.controlled, opt.rule));
+    out.evaluations = per_panel * static_cast<int>(heap.size());
+    return detail::adaptive_from<N>(f, std::move(heap), opt, out);
+}
+
+// The same over [a, b] from `panels` equal panels instead of given break
+// points: when the integrand is known to need several panels (a long range
+// over which it varies on a shorter scale), this saves the evaluations of
+// the coarse panels that bisection would discard. panels = 1 is
+// integrate_adaptive.
 template <std::size_t N, class F>
 Estimate<N> integrate_adaptive_panels(F&& f, double a, double b, int panels,
                                       const AdaptiveOptions& opt = {}) {
-    Estimate<N> out;
-    if (!(b > a)) return out;
-    panels = std::max(panels, 1);
-    const int per_panel = kronrod_points(opt.rule);
-    out.evaluations = per_panel * panels;
-    if (panels == 1)
-        return detail::adaptive_from_one<N>(f, detail::kronrod_panel<N>(f, a, b, opt.controlled, opt.rule), opt, out);
-    std::vector<detail::Interval<N>> heap = detail::interval_heap<N>(static_cast<std::size_t>(panels), opt);
-    for (int k = 0; k < panels; ++k) {
-        const double lo = k == 0 ? a : a + (b - a) * k / panels;
-        const double hi = k + 1 == panels ? b : a + (b - a) * (k + 1) / panels;
-        heap.push_back(detail::kronrod_panel<N>(f, lo, hi, opt.controlled, opt.rule));
+    if (!(b > a)) return Estimate<N>{};
+    if (panels <= 1) {  // no allocation: inner integrals run once per outer node
+        const double ends[2] = {a, b};
+        return integrate_adaptive_breaks<N>(f, ends, 2, opt);
     }
-    return detail::adaptive_from<N>(f, std::move(heap), opt, out);
+    std::vector<double> breaks(static_cast<std::size_t>(panels) + 1);
+    for (int k = 0; k <= panels; ++k)
+        breaks[static_cast<std::size_t>(k)] = k == 0 ? a : k == panels ? b : a + (b - a) * k / panels;
+    return integrate_adaptive_breaks<N>(f, breaks.data(), breaks.size(), opt);
 }
 
 template <std::size_t N, class F>

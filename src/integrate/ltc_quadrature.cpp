@@ -316,7 +316,7 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
             const double u = ua + len * x;
             return std::array<double, 1>{lobe(f.direction_at(u, kk, t)) * f.measure(u, kk) * len * jac};
         };
-        cuts.clear();
+        cuts.assign({0.0, 1.0});
         for (const Vec3& v : kinks) {
             const double at = std::atan2(dot(v, t), dot(v, f.axis));
             if (at > lo && at < hi) {
@@ -324,15 +324,8 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
                 cuts.push_back(at_horizon ? 1.0 - std::sqrt(std::max(0.0, 1.0 - x)) : x);
             }
         }
-        if (cuts.empty()) return integrate_adaptive<1>(g, 0.0, 1.0, inner).value;
         std::sort(cuts.begin(), cuts.end());
-        cuts.insert(cuts.begin(), 0.0);
-        cuts.push_back(1.0);
-        std::vector<detail::Interval<1>> heap = detail::interval_heap<1>(cuts.size() - 1, inner);
-        for (std::size_t k = 0; k + 1 < cuts.size(); ++k)
-            if (cuts[k + 1] > cuts[k])
-                heap.push_back(detail::kronrod_panel<1>(g, cuts[k], cuts[k + 1], inner.controlled, inner.rule));
-        return detail::adaptive_from<1>(g, std::move(heap), inner, Estimate<1>{}).value;
+        return integrate_adaptive_breaks<1>(g, cuts.data(), cuts.size(), inner).value;
     };
     double sum = 0.0;
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
