@@ -547,7 +547,7 @@ namespace brdflut {
 namespace {
 
 // C = A B for n x n row-major matrices. Each C[i][j] sums A[i][k] B[k][j]
-// over k in order (a zero A[i][k] adds nothing), eight columns at a time
+// over k in order (a zero A[i][k] adds nothing), sixteen columns at a time
 // held in registers across k.
 BRDFLUT_WIDEST_CLONES void multiply(const std::vector<double>& A, const std::vector<double>& B,
                                    std::vector<double>& C, std::size_t n) {
