@@ -15,6 +15,8 @@
 #include "brdflut/generic_lobe.h"
 #include "brdflut/sheen_integrals.h"
 #include "brdflut/verify.h"
+#include "brdflut/ltc_fit.h"
+#include "tables/ltc_tables.h"
 #include "tables/sheen_charlie_check.h"
 #include "test_support.h"
 
@@ -217,6 +219,38 @@ TEST(SheenCharlieLtc, HdrpCharlieTablesPassVerifyAndAreTheSameForAnyThreadCount)
         const Table a = test::generate_fresh(def, s, 1), b = test::generate_fresh(def, s, 2);
         EXPECT_EQ(a.values, b.values) << id;
         EXPECT_EQ(a.method.dump(), b.method.dump()) << id;
+    }
+}
+
+// The norm table takes the n0 the fits of the same texel use (computed once
+// per run at the lobe's tolerance) when that n0's error estimate meets the
+// norm table's own tolerance, whether or not a fit ran first; at reference
+// quality it integrates again at its tighter tolerance.
+TEST(SheenCharlieLtc, NormTableTakesTheFitsNormOnlyWhenItsEstimateMeetsTheTablesTolerance) {
+    const TableDefinition& def = find_table("ltc_sheen_charlie_ek_norm");
+    const TableDefinition& matrix = find_table("ltc_sheen_charlie_ek");
+    TableSettings reference = default_settings(def);
+    reference.quality = Quality::reference;
+    for (bool fit_first : {false, true}) {
+        clear_shared_results();
+        const PreparedTable norm = def.prepare(default_settings(def));
+        const PreparedTable fine = def.prepare(reference);
+        const PreparedTable fits = matrix.prepare(default_settings(matrix));
+        for (double r : {0.25, 0.8})
+            for (double mu : {0.15, 0.9}) {
+                const double at[2] = {r, mu};
+                if (fit_first) fits.evaluator->evaluate(at, 0);
+                const LtcLobe lobe = ltc_table_lobe(def, r, mu);
+                const LtcNorms own = ltc_norms(lobe);  // at the lobe's tolerance, as the fits
+                ASSERT_LE(own.n0_error, lobe.norm_tolerance) << r << " " << mu;
+                const TexelValue v = norm.evaluator->evaluate(at, 0);
+                EXPECT_EQ(v.value[0], own.n0) << r << " " << mu;
+                EXPECT_EQ(v.error[0], own.n0_error);
+                const TexelValue f = fine.evaluator->evaluate(at, 0);
+                EXPECT_NE(f.value[0], own.n0) << "reference quality integrates again";
+                EXPECT_LE(f.error[0], 0.01 * lobe.norm_tolerance);
+                EXPECT_NEAR(f.value[0], v.value[0], v.error[0] + f.error[0]);
+            }
     }
 }
 

@@ -87,10 +87,14 @@ struct LtcLobe {
     std::shared_ptr<const GenericLobe> generic;
     std::uint64_t key = 0;
     double norm_tolerance = 0.0;
-    // The generic kind's n0 when the lobe knows it (>= 0, with its error; a
-    // lobe without Fresnel, n1 = 0): ltc_norms returns it instead of
-    // integrating f.
+    // The generic kind's norms when they are known (known_n0 >= 0, with its
+    // error; n1 is 0 for a lobe without Fresnel): ltc_norms returns them
+    // instead of integrating f. A lobe that knows its albedo in closed form
+    // sets them, and a table run sets the norms it has computed once for
+    // the texel, so that the fit, its error report and the norm tables do
+    // not integrate f again.
     double known_n0 = -1.0, known_n0_error = 0.0;
+    double known_n1 = 0.0, known_n1_error = 0.0;
 
 private:
     bool peaked_ = true;

@@ -449,6 +449,8 @@ LtcNorms ltc_norms(const LtcLobe& lobe) {
             if (lobe.known_n0 >= 0.0) {
                 n.n0 = lobe.known_n0;
                 n.n0_error = lobe.known_n0_error;
+                n.n1 = lobe.known_n1;
+                n.n1_error = lobe.known_n1_error;
                 break;
             }
             // The split sums {A, B}: n0 = A + B, n1 = B.

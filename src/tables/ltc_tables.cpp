@@ -9,6 +9,7 @@
 //   divided by its m22, as _m00_m02_m11_m20 of the transpose)
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -66,8 +67,30 @@ tables::SharedResults<8, TexelFit>& texel_fit_cache() {
     static tables::SharedResults<8, TexelFit> cache(1 << 16);
     return cache;
 }
-TexelFit texel_fit(const LtcLobe& lobe, const LtcFitOptions& opt) {
+// The norms of a generic lobe at a texel, computed once per run at the
+// lobe's own tolerance: the fit, its error report and the norm tables of
+// the lobe all need n0, and the generic path's integral costs as much as a
+// good part of the fit (65,536 texels at most, ~2 MB).
+LtcNorms shared_norms(const LtcLobe& lobe) {
+    static tables::SharedResults<4, LtcNorms> cache(1 << 16);
     using tables::key_bits;
+    return cache.get({lobe.key, key_bits(lobe.mu_o), key_bits(lobe.param), key_bits(lobe.norm_tolerance)},
+                     [&] { return ltc_norms(lobe); });
+}
+// The lobe with those norms known (a lobe that knows its own is kept).
+LtcLobe with_shared_norms(LtcLobe lobe) {
+    if (lobe.kind != LtcLobeKind::generic || lobe.known_n0 >= 0.0) return lobe;
+    const LtcNorms n = shared_norms(lobe);
+    lobe.known_n0 = n.n0;
+    lobe.known_n0_error = n.n0_error;
+    lobe.known_n1 = n.n1;
+    lobe.known_n1_error = n.n1_error;
+    return lobe;
+}
+
+TexelFit texel_fit(const LtcLobe& given, const LtcFitOptions& opt) {
+    using tables::key_bits;
+    const LtcLobe lobe = with_shared_norms(given);
     return texel_fit_cache().get(
         {tables::key_enum(lobe.kind), tables::key_enum(lobe.vis), key_bits(lobe.mu_o), key_bits(lobe.param), lobe.key,
          static_cast<std::uint64_t>(opt.radial_nodes), static_cast<std::uint64_t>(opt.azimuth_nodes),
@@ -85,9 +108,10 @@ bool is_matrix(Layout l) { return l == Layout::heitz_matrix || l == Layout::hdrp
 // fit: they do not fit.
 bool fits(Layout l) { return l != Layout::heitz_norms && l != Layout::norm; }
 
-// The norm tables of a generic lobe compute n0 = A + B to the quality's
+// The norm tables of a generic lobe hold n0 = A + B to the quality's
 // tolerance: the lobe's own norm tolerance (the default quality's) times
-// this, each of A and B to half of it.
+// this. They take the fits' n0 (shared_norms) where its error estimate
+// meets that, else compute A and B to half of it each.
 double norm_tolerance_scale(Quality q) { return q == Quality::draft ? 100.0 : q == Quality::reference ? 0.01 : 1.0; }
 
 class LtcEvaluator final : public TexelEvaluator {
@@ -103,7 +127,14 @@ public:
         LtcLobe lobe = lobe_(r, mu, options_);
         TexelValue out;
         if (!fits(layout_)) {
-            if (lobe.kind == LtcLobeKind::generic) lobe.norm_tolerance *= 0.5 * norm_scale_;
+            if (lobe.kind == LtcLobeKind::generic && lobe.known_n0 < 0.0) {
+                // The norms the fits use when their error estimates meet
+                // this table's tolerance, else A and B to half of it each.
+                const double wanted = lobe.norm_tolerance * norm_scale_;
+                const LtcNorms shared = norm_scale_ >= 1.0 ? shared_norms(lobe) : LtcNorms{-1.0, 0.0, HUGE_VAL, 0.0};
+                if (shared.n0_error <= wanted && shared.n1_error <= wanted) lobe = with_shared_norms(lobe);
+                else lobe.norm_tolerance = 0.5 * wanted;
+            }
             const LtcNorms n = ltc_norms(lobe);
             if (layout_ == Layout::norm) {
                 out.value[0] = n.n0;
@@ -290,8 +321,10 @@ TableDefinition ltc_table(LtcTableSpec e) {
         if (!fits(layout)) {
             p.method = {{"rule", kNormRule}};
             if (sample.kind == LtcLobeKind::generic) {
-                p.method["rule"] = std::string(kNormRule) + "; n0 = A + B by the generic lobe path, each to half "
-                                                             "of abs_tolerance";
+                p.method["rule"] = std::string(kNormRule) +
+                                   "; n0 = A + B by the generic lobe path: the fits' n0 (A and B each to the "
+                                   "lobe's norm tolerance) where its error estimate is within abs_tolerance, else "
+                                   "A and B each to half of abs_tolerance";
                 p.method["abs_tolerance"] = sample.norm_tolerance * norm_scale;
             }
             return p;
