@@ -83,6 +83,16 @@ private:
     EstevezKullaFit fit_;
 };
 
+// The albedo E and the Fresnel moment F (f weighted by (1 - wo.h)^5) of
+// the Charlie lobe with any of the shadowings, at mu_o in (0, 1] (clamped to
+// at least 1e-12) and alpha in (0, 1], by quadrature over the half vector
+// (src/integrate/sheen_albedo.cpp): the rule of sheen_charlie_albedo with
+// the azimuth integrated numerically, since G has no closed form there.
+// {value, estimated error, evaluations of G}. The same moments as
+// generic_moments of the CharlieLobe with weights 1 and (1 - c)^5, by
+// another route.
+Estimate<2> sheen_charlie_moments(double mu_o, double alpha, SheenShadowing shadowing, double abs_tol);
+
 // HDRP's fabric Lambert: f = (1 - alpha/2) / pi (HDRP's FabricLambert, an
 // empirical diffuse term of its fabric material), whose albedo is 1 - alpha/2.
 class FabricLambertLobe final : public GenericLobe {

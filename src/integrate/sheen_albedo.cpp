@@ -34,8 +34,27 @@
 // polynomial maps flatten the rule's ends there. Each piece uses adaptive
 // Gauss-Kronrod (7, 15); the error adds the QUADPACK estimates, a rounding
 // bound of the closed form, and the neglected tails.
+//
+// The moments of the lobe with any shadowing (sheen_charlie_moments, for the
+// Estevez-Kulla G of charlie_ek.h, which has no closed form over the
+// azimuth): the same outer rule over zeta, with g = 4 V mu_i (wo.h) w / c
+// (4 V mu_i = G / mu_o for Estevez-Kulla, mu_i / (mu_i + mu_o - mu_i mu_o)
+// for Neubelt; w = 1 or (1 - wo.h)^5) integrated over phi by adaptive
+// Gauss-Kronrod (15, 31). A ring is split where mu_i = 1/2 (Lambda's kink),
+// and where the horizon clips it the last piece is taken in t with
+// phi = phi_m - (phi_m - phi_0) t^4: near mu_i = 0, Lambda goes as
+// exp(a / (1 + b mu_i^c)), c about 0.2, which t^4 nearly straightens. The
+// outer axis is split, besides the clip limits, where the rings start and
+// stop crossing mu_i = 1/2 and at the ring through the normal (Lambda's
+// (1 - mu_i)^c at wi = n); its first piece, which starts where the whole
+// ring reaches the horizon, is flattened there by zeta = zeta_2 + len s^4
+// for the same reason. Each inner integral gets the tolerance its outer
+// weight requires and its error estimate is integrated with the values.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "brdflut/charlie_ek.h"
 #include "brdflut/random.h"
 #include "brdflut/sheen.h"
 #include "brdflut/sheen_integrals.h"
@@ -118,6 +137,36 @@ struct EndMap {
     }
 };
 
+// The outer axis of both rules: beta = pi/2 - theta_h, the weight
+// dv/dzeta = n u^(n - 1) c beta in zeta = ln(beta) (u = cos(beta) =
+// sin(theta_h), c = sin(beta)), largest at beta_2 = asin(mu_o) / 2 (or at 0
+// when mu_o = 0), where the whole ring reaches the horizon; past beta_hi it
+// is e^-kWeightSpan times smaller.
+struct HalfVectorAxis {
+    double n, ln_n, beta_2, beta_hi;
+    HalfVectorAxis(double mu_o, double alpha)
+        : n(2.0 + 1.0 / alpha), ln_n(std::log(n)), beta_2(0.5 * std::asin(mu_o)),
+          beta_hi(std::min(0.5 * kPi, std::acos(std::cos(beta_2) * std::exp(-kWeightSpan / (n - 1.0))))) {}
+    // ln(u^(n - 1)), with 1 - u = 2 sin(beta/2)^2.
+    double log_weight(double beta) const {
+        const double h = std::sin(0.5 * beta);
+        return (n - 1.0) * std::log1p(-2.0 * h * h);
+    }
+    struct Node {
+        double u, c, weight;
+    };
+    Node at(double beta) const {
+        const double h = std::sin(0.5 * beta), hc = std::cos(0.5 * beta);
+        const double c = 2.0 * h * hc;
+        return {1.0 - 2.0 * h * h, c, std::exp(ln_n + log_weight(beta)) * c * beta};
+    }
+    // The integral of dv above beta_hi, over c there, times g_c, a bound
+    // on g c: the neglected tail of the integral of g dv (one phi).
+    double tail(double g_c) const {
+        return beta_hi < 0.5 * kPi ? g_c / std::sin(beta_hi) * std::exp(log_weight(beta_2) - kWeightSpan) : 0.0;
+    }
+};
+
 }  // namespace
 
 Estimate<1> sheen_charlie_albedo(double mu_o, double alpha, double abs_tol) {
@@ -125,33 +174,20 @@ Estimate<1> sheen_charlie_albedo(double mu_o, double alpha, double abs_tol) {
     if (!(alpha > 0.0)) return out;  // the lobe vanishes
     mu_o = clamp01(mu_o);
     const double sin_o = safe_sqrt(1.0 - mu_o * mu_o);
-    const double n = 2.0 + 1.0 / alpha;
+    const HalfVectorAxis axis(mu_o, alpha);
+    const double n = axis.n, beta_2 = axis.beta_2, beta_hi = axis.beta_hi;
     // beta = pi/2 - theta_h at the clip limits: the whole ring is reflected
     // above beta_1, none of it below beta_2.
-    const double beta_2 = 0.5 * std::asin(mu_o);
     const double beta_1 = 0.5 * kPi - beta_2;
-    const double ln_n = std::log(n);
-
-    // ln(u^(n - 1)), u = cos(beta), with 1 - u = 2 sin(beta/2)^2.
-    auto log_weight = [&](double beta) {
-        const double h = std::sin(0.5 * beta);
-        return (n - 1.0) * std::log1p(-2.0 * h * h);
-    };
-    // The weight is largest at beta_2 (or at 0 when mu_o = 0); past beta_hi
-    // it is e^-kWeightSpan times smaller.
-    const double beta_hi = std::min(0.5 * kPi, std::acos(std::cos(beta_2) * std::exp(-kWeightSpan / (n - 1.0))));
     // At mu_o = 0 the range starts at beta = 0, where g ~ 1/beta: start
     // where the skipped part, at most n beta * 2, is negligible.
     const double beta_lo = std::max(beta_2, 1e-18 / n);
 
-    // Integrand in zeta = ln(beta): F times dv/dzeta = n u^(n - 1) c beta.
+    // Integrand in zeta = ln(beta): F times dv/dzeta.
     auto at = [&](double zeta) -> std::array<double, 2> {
-        const double beta = std::exp(zeta);
-        const double h = std::sin(0.5 * beta), hc = std::cos(0.5 * beta);
-        const double u = 1.0 - 2.0 * h * h, c = 2.0 * h * hc;
-        const std::array<double, 2> f = ring_integral(mu_o, sin_o, u, c);
-        const double weight = std::exp(ln_n + log_weight(beta)) * c * beta;
-        return {f[0] * weight, f[1] * weight};
+        const HalfVectorAxis::Node x = axis.at(std::exp(zeta));
+        const std::array<double, 2> f = ring_integral(mu_o, sin_o, x.u, x.c);
+        return {f[0] * x.weight, f[1] * x.weight};
     };
     AdaptiveOptions opt;
     opt.abs_tol = 0.5 * abs_tol * kPi;
@@ -178,10 +214,144 @@ Estimate<1> sheen_charlie_albedo(double mu_o, double alpha, double abs_tol) {
     // Neglected tails: below beta_lo (g <= 2/c ~ 2/beta over dv <= n beta
     // dbeta), above beta_hi (dv < e^-span over u, g <= 2 / c).
     if (beta_lo > beta_2) error += 2.0 * n * beta_lo * kPi;
-    if (beta_hi < 0.5 * kPi)
-        error += 2.0 * kPi / std::sin(beta_hi) * std::exp(log_weight(beta_2) - kWeightSpan);
+    error += kPi * axis.tail(2.0);
     out.value[0] = value * kInvPi;
     out.error[0] = error * kInvPi + 1e-16;
+    return out;
+}
+
+Estimate<2> sheen_charlie_moments(double mu_o, double alpha, SheenShadowing shadowing, double abs_tol) {
+    Estimate<2> out;
+    out.evaluations = 0;
+    if (!(alpha > 0.0)) return out;  // the lobe vanishes
+    alpha = std::min(alpha, 1.0);
+    mu_o = std::clamp(std::isnan(mu_o) ? 0.0 : mu_o, 1e-12, 1.0);
+    const bool ek = shadowing != SheenShadowing::neubelt;
+    const bool soft = shadowing == SheenShadowing::estevez_kulla_soft;
+    const EstevezKullaFit fit(alpha);
+    const double lambda_o = ek ? fit.lambda(mu_o) : 0.0;
+    const double sin_o = safe_sqrt((1.0 - mu_o) * (1.0 + mu_o));
+    const double theta_o = std::acos(mu_o);
+    const HalfVectorAxis axis(mu_o, alpha);
+    // 4 V mu_i as a function of mu_i > 0.
+    auto visibility = [&](double mu_i) {
+        return ek ? 1.0 / (mu_o * (1.0 + lambda_o + fit.lambda_light(mu_i, soft)))
+                  : mu_i / (mu_i + mu_o - mu_i * mu_o);
+    };
+    constexpr int kClipPower = 4;
+    int evaluations = 0;
+
+    // The azimuth integral of g at u = sin(theta_h), c = cos(theta_h), to
+    // tolerance tol: {F_E, F_F, error estimate}.
+    auto ring = [&](double u, double c, double tol) -> std::array<double, 3> {
+        std::array<double, 3> r{};
+        if (!(c > 0.0)) return r;
+        const double p = sin_o * u, q = mu_o * c;
+        const double mu_i_0 = 2.0 * c * (p + q) - mu_o, mu_i_pi = 2.0 * c * (q - p) - mu_o;
+        if (!(mu_i_0 > 0.0)) return r;
+        // phi where mu_i takes the value m (mu_i = 2 c (p cos(phi) + q) - mu_o).
+        auto phi_at = [&](double m) {
+            return std::acos(std::clamp(((m + mu_o) / (2.0 * c) - q) / p, -1.0, 1.0));
+        };
+        const bool clipped = mu_i_pi < 0.0;
+        const double phi_m = clipped ? phi_at(0.0) : kPi;
+        const double phi_k = ek && mu_i_0 > 0.5 && mu_i_pi < 0.5 ? phi_at(0.5) : 0.0;
+        auto g = [&](double phi) -> std::array<double, 2> {
+            ++evaluations;
+            const double o_h = p * std::cos(phi) + q;
+            const double mu_i = 2.0 * c * o_h - mu_o;
+            if (!(mu_i > 0.0)) return {0.0, 0.0};
+            const double v = visibility(mu_i) * o_h / c;
+            const double w = 1.0 - o_h, w2 = w * w;
+            return {v, v * w2 * w2 * w};
+        };
+        AdaptiveOptions opt;
+        opt.abs_tol = tol;
+        opt.rule = KronrodRule::k31;
+        auto add = [&](const Estimate<2>& e) {
+            r[0] += e.value[0];
+            r[1] += e.value[1];
+            r[2] += e.error[0] + e.error[1];
+        };
+        if (phi_k > 0.0 && phi_k < phi_m) add(integrate_adaptive<2>(g, 0.0, phi_k, opt));
+        const double a = std::max(phi_k, 0.0), len = phi_m - a;
+        if (!(len > 0.0)) return r;
+        if (!clipped) {
+            add(integrate_adaptive<2>(g, a, phi_m, opt));
+        } else {
+            add(integrate_adaptive<2>(
+                [&](double t) {
+                    const double t3 = t * t * t;
+                    const std::array<double, 2> y = g(phi_m - len * t3 * t);
+                    const double j = len * kClipPower * t3;
+                    return std::array<double, 2>{y[0] * j, y[1] * j};
+                },
+                0.0, 1.0, opt));
+        }
+        return r;
+    };
+
+    // beta = pi/2 - theta_h: the whole ring is below the horizon under
+    // beta_2, clipped up to beta_1.
+    const double beta_2 = axis.beta_2, beta_hi = axis.beta_hi;
+    const double beta_1 = 0.25 * kPi + 0.5 * theta_o;
+    std::vector<double> breaks = {beta_2, beta_1, beta_hi};
+    if (ek)  // the rings through mu_i = 1/2 at phi = 0 or pi, and through the normal
+        for (double theta_h : {0.5 * (kPi / 3.0 + theta_o), 0.5 * (theta_o - kPi / 3.0), 0.5 * (kPi / 3.0 - theta_o),
+                               0.5 * theta_o})
+            if (theta_h > 0.0) breaks.push_back(0.5 * kPi - theta_h);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::remove_if(breaks.begin(), breaks.end(), [&](double b) { return !(b >= beta_2 && b <= beta_hi); }),
+                 breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    const double scale = kInvPi;  // E = (1/pi) integral over v of the azimuth integral over [0, pi]
+    const std::size_t pieces = breaks.size() - 1;
+    AdaptiveOptions opt;
+    opt.abs_tol = 0.5 * abs_tol / scale / static_cast<double>(std::max<std::size_t>(pieces, 1));
+    opt.controlled = 2;
+    std::array<double, 2> value{}, error{};
+    double inner_error = 0.0;
+    for (std::size_t k = 0; k < pieces; ++k) {
+        const double b0 = breaks[k], b1 = breaks[k + 1];
+        if (!(b1 > b0)) continue;
+        const bool flat_start = k == 0, flat_end = b1 == 0.5 * kPi;
+        const double z0 = std::log(b0), len = std::log(b1) - z0;
+        const Estimate<3> e = integrate_adaptive<3>(
+            [&](double s) -> std::array<double, 3> {
+                // s -> [0, 1]: s^4 at the start (the whole ring at the
+                // horizon), 1 - (1 - s)^3 at the pole.
+                double x = s, dx = 1.0;
+                if (flat_end) {
+                    const double r = 1.0 - s;
+                    x = 1.0 - r * r * r;
+                    dx = 3.0 * r * r;
+                }
+                if (flat_start) {
+                    const double x3 = x * x * x;
+                    dx *= kClipPower * x3;
+                    x *= x3;
+                }
+                const HalfVectorAxis::Node node = axis.at(std::exp(z0 + len * x));
+                const double weight = node.weight * len * dx;
+                if (!(weight > 0.0)) return {0.0, 0.0, 0.0};
+                const std::array<double, 3> f = ring(node.u, node.c, 0.05 * opt.abs_tol / weight);
+                return {f[0] * weight, f[1] * weight, f[2] * weight};
+            },
+            0.0, 1.0, opt);
+        for (std::size_t i = 0; i < 2; ++i) {
+            value[i] += e.value[i];
+            error[i] += e.error[i];
+        }
+        inner_error += e.value[2] + e.error[2];
+    }
+    // The neglected tail above beta_hi: dv below e^-span times the largest
+    // weight, g <= 4 V mu_i / c <= 1 / (mu_o c), c >= sin(beta_hi).
+    const double tail = kPi * axis.tail(1.0 / mu_o);
+    for (std::size_t i = 0; i < 2; ++i) {
+        out.value[i] = value[i] * scale;
+        out.error[i] = (error[i] + inner_error + tail) * scale + 1e-16;
+    }
+    out.evaluations = evaluations;
     return out;
 }
 

@@ -166,7 +166,7 @@ nlohmann::json ggx_model(Visibility vis) {
 const tables::RecipeMethod kMethod{
     "per channel the rule of the matching core table: ggx_dfg (split sums), ggx_albedo_avg, "
     "ggx_glass_albedo and ggx_glass_albedo_avg (glass), "
-    "disney_diffuse_albedo, sheen_charlie_albedo, sheen_charlie_moments (generic lobe path), "
+    "disney_diffuse_albedo, sheen_charlie_albedo, sheen_charlie_moments (over the half vector), "
     "fabric_lambert_albedo; error per value: that rule's estimate",
     "as the core tables: GGX visible normals (ggx_*), cosine hemisphere (disney_*), uniform + Charlie "
     "mixture (sheen_charlie_albedo), cosine + reflected Charlie normals (sheen_charlie_moments), a defensive "

@@ -1,9 +1,10 @@
-// Charlie sheen with the Estevez-Kulla shadowing (charlie_ek.h): albedo,
-// Fresnel moment and their averages, with or without the terminator
-// softening, through the generic lobe path (generic_lobe.h) from the BRDF
-// alone; HDRP's fabric Lambert albedo; HDRP's Charlie LTC layer. The same
-// lobe with Neubelt's visibility gives the moments Unreal's cloth table
-// stores. The checks use an independent rule over the half vector
+// Charlie sheen with the Estevez-Kulla shadowing (charlie_ek.h): albedo and
+// Fresnel moment over the half vector (sheen_charlie_moments), their
+// averages through the generic lobe path (generic_lobe.h) from the BRDF
+// alone, with or without the terminator softening; HDRP's fabric Lambert
+// albedo; HDRP's Charlie LTC layer. The same lobe with Neubelt's visibility
+// gives the moments Unreal's cloth table stores. The checks use an
+// independent rule over the half vector's polar angles
 // (sheen_charlie_check.h).
 //
 // Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF"
@@ -114,13 +115,20 @@ constexpr double kMinAlpha = 1e-5;
 // finite, so E(0) is infinite.
 constexpr double kMinMu = 1e-4;
 
-const char* kQuadratureRule =
-    "generic lobe path (generic_lobe.h): wi in polar coordinates (theta, psi) about the normal, theta split "
-    "at the cone mu_i = 1/2 (Lambda's kink) and at the rings through the mirror direction (D's cusp) and the "
-    "normal (Lambda's (1 - mu_i)^c), the rings next to those points cut about them, adaptive Gauss-Kronrod "
-    "(10,21) in both; E_avg: adaptive "
-    "Gauss-Kronrod over mu, split at mu = 1/2 (Lambda(mu_o)'s kink); alpha below 1e-5 computed at 1e-5, alpha = 0 the limit 0; cos_theta below 1e-4 "
-    "computed at 1e-4; error per value: QUADPACK estimate plus the integrated inner estimates";
+// The rules of the three kinds of table.
+const char* kMomentsRule =
+    "over the half vector (sheen_charlie_moments, charlie_ek.h): v = sin(theta_h)^(2 + 1/alpha), which takes "
+    "D, in ln(pi/2 - theta_h), split where the rings start and stop reaching the horizon and crossing mu_i = 1/2 "
+    "(Lambda's kink) and at the ring through the normal (Lambda's (1 - mu_i)^c), the start flattened by s^4; the "
+    "azimuth split at mu_i = 1/2, the piece that ends at the horizon in t^4; adaptive Gauss-Kronrod (7,15) outside, "
+    "(15,31) inside; alpha below 1e-5 computed at 1e-5, alpha = 0 the limit 0; cos_theta below 1e-4 computed at "
+    "1e-4; error per value: QUADPACK estimate plus the integrated inner estimates and the bounded tail";
+const char* kAverageRule =
+    "2 * integral of M(mu) mu dmu by adaptive Gauss-Kronrod over mu, split at mu = 1/2 (Lambda(mu_o)'s kink), each "
+    "M(mu) through the generic lobe path (generic_lobe.h: wi in polar coordinates about the normal, split at the "
+    "cone mu_i = 1/2 and at the rings through the mirror direction and the normal); alpha below 1e-5 computed at "
+    "1e-5, alpha = 0 the limit 0; error per value: QUADPACK estimate plus the integrated inner estimates";
+const char* kFabricRule = "the generic lobe path (generic_lobe.h) over the hemisphere; error per value: QUADPACK estimate";
 const char* kMcSampler = "equal mixture of the cosine-weighted hemisphere and reflected Charlie normals";
 
 ModelOption shadowing_option() {
@@ -166,12 +174,7 @@ Estimate<2> moments(double mu, double alpha, SheenShadowing s, double abs_tol, b
     if (!(alpha > 0.0)) return {};
     static tables::SharedResults<4, Estimate<2>> cache(1 << 18);
     return cache.get({tables::key_bits(mu), tables::key_bits(alpha), tables::key_bits(abs_tol), shadowing_key(s)},
-                     [&] {
-                         const CharlieLobe lobe(std::max(alpha, kMinAlpha), s);
-                         GenericOptions opt;
-                         opt.abs_tol = abs_tol;
-                         return generic_moments<2>(lobe, std::max(mu, kMinMu), kWeights, opt);
-                     },
+                     [&] { return sheen_charlie_moments(std::max(mu, kMinMu), std::max(alpha, kMinAlpha), s, abs_tol); },
                      computed);
 }
 
@@ -277,7 +280,10 @@ TableDefinition make(Kind kind, std::string id, std::string description, std::ve
                       : charlie_model(sh);
         p.method = s.method == Method::monte_carlo
                        ? tables::monte_carlo_method(kind == Kind::fabric ? "cosine-weighted hemisphere" : kMcSampler, s)
-                       : tables::quadrature_method(kQuadratureRule, kTolerances.at(s.quality));
+                       : tables::quadrature_method(kind == Kind::moments   ? kMomentsRule
+                                                   : kind == Kind::average ? kAverageRule
+                                                                           : kFabricRule,
+                                                   kTolerances.at(s.quality));
         return p;
     };
     return d;
@@ -432,8 +438,10 @@ void register_sheen_charlie_family(FamilyEntries& family) {
          "(Lambda(mu_i)^(1 + 2 (1 - mu_i)^8) on the light direction) or Neubelt's visibility (the Charlie lobe "
          "of Filament and Unreal). Tables: the albedo E, the Fresnel moment F (f weighted by (1 - v.h)^5) and "
          "HDRP's encoding E/(1 + E), their averages over the view, HDRP's fabric Lambert albedo, and HDRP's "
-         "Charlie LTC layer with its per-texel error. Every table is built through the generic lobe path "
-         "(`src/brdflut/generic_lobe.h`); the checks integrate over the half vector instead."});
+         "Charlie LTC layer with its per-texel error. E and F are integrated over the half vector "
+         "(`sheen_charlie_moments`, `src/brdflut/charlie_ek.h`), the averages and the LTC's norms through the "
+         "generic lobe path (`src/brdflut/generic_lobe.h`) from the BRDF alone; the checks use a third rule, a "
+         "nested one over the half vector's polar angles, and the tests hold the two routes to each other."});
     std::vector<TableDefinition>& out = family.tables;
     out.push_back(make(Kind::moments, "sheen_charlie_moments",
                        "Charlie sheen albedo E, Fresnel moment F and E/(1 + E), Estevez-Kulla shadowing by default",
