@@ -318,14 +318,10 @@ Estimate<2> sheen_charlie_moments(double mu_o, double alpha, SheenShadowing shad
         const double z0 = std::log(b0), len = std::log(b1) - z0;
         const Estimate<3> e = integrate_adaptive<3>(
             [&](double s) -> std::array<double, 3> {
-                // s -> [0, 1]: s^4 at the start (the whole ring at the
-                // horizon), 1 - (1 - s)^3 at the pole.
-                double x = s, dx = 1.0;
-                if (flat_end) {
-                    const double r = 1.0 - s;
-                    x = 1.0 - r * r * r;
-                    dx = 3.0 * r * r;
-                }
+                // s -> [0, 1]: 1 - (1 - s)^3 at the pole (EndMap), then
+                // s^4 at the start (the whole ring at the horizon).
+                const std::array<double, 2> m = EndMap{false, flat_end}(s);
+                double x = m[0], dx = m[1];
                 if (flat_start) {
                     const double x3 = x * x * x;
                     dx *= kClipPower * x3;

@@ -9,7 +9,6 @@
 //   divided by its m22, as _m00_m02_m11_m20 of the transpose)
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -130,9 +129,14 @@ public:
             if (lobe.kind == LtcLobeKind::generic && lobe.known_n0 < 0.0) {
                 // The norms the fits use when their error estimates meet
                 // this table's tolerance, else A and B to half of it each.
+                // (Below the default quality's tolerance they never do.)
                 const double wanted = lobe.norm_tolerance * norm_scale_;
-                const LtcNorms shared = norm_scale_ >= 1.0 ? shared_norms(lobe) : LtcNorms{-1.0, 0.0, HUGE_VAL, 0.0};
-                if (shared.n0_error <= wanted && shared.n1_error <= wanted) lobe = with_shared_norms(lobe);
+                bool meets = false;
+                if (norm_scale_ >= 1.0) {
+                    const LtcNorms shared = shared_norms(lobe);
+                    meets = shared.n0_error <= wanted && shared.n1_error <= wanted;
+                }
+                if (meets) lobe = with_shared_norms(lobe);
                 else lobe.norm_tolerance = 0.5 * wanted;
             }
             const LtcNorms n = ltc_norms(lobe);
