@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -202,6 +203,76 @@ std::vector<double> direction_nodes(int per_panel, double horizon, double top_ed
     return nodes;
 }
 
+// The scattering source of the layer solve, g = W v split by the layer's
+// symmetry: for each up ordinate j and depth i, Gu = sum over l of ws_jl
+// S_l + wd_jl D_l and Gd = sum of ws_jl S_l - wd_jl D_l (S = v_up + v_down,
+// D = v_up - v_down; ws, wd the n x n halves sum_ab, diff_ab; rows of nz
+// depths). Each value sums its terms over l in order, as (p + q) and (p -
+// q) added to a running sum from 0; two ordinates and eight depths at a
+// time are held in registers across l, so that S and D are read once for
+// both.
+BRDFLUT_WIDEST_CLONES void scatter_source(const double* ws, const double* wd, const double* S, const double* D,
+                                          double* g, std::size_t n, std::size_t nz) {
+    // Four depths a vector (two SSE2 registers without AVX), two vectors a
+    // tile; lane by lane the operations of the scalar loop below.
+    using V = double __attribute__((vector_size(32)));
+    auto load = [](V& v, const double* p) { std::memcpy(&v, p, sizeof v); };
+    auto store = [](double* p, const V& v) { std::memcpy(p, &v, sizeof v); };
+    auto one = [&](std::size_t j, std::size_t i0, std::size_t count) {
+        for (std::size_t i = i0; i < i0 + count; ++i) {
+            double u = 0.0, d = 0.0;
+            for (std::size_t l = 0; l < n; ++l) {
+                const double p = ws[j * n + l] * S[l * nz + i], q = wd[j * n + l] * D[l * nz + i];
+                u += p + q;
+                d += p - q;
+            }
+            g[j * nz + i] = u;
+            g[(j + n) * nz + i] = d;
+        }
+    };
+    std::size_t j = 0;
+    for (; j + 2 <= n; j += 2) {
+        std::size_t i0 = 0;
+        for (; i0 + 8 <= nz; i0 += 8) {
+            V u0a{}, u0b{}, d0a{}, d0b{}, u1a{}, u1b{}, d1a{}, d1b{};
+            for (std::size_t l = 0; l < n; ++l) {
+                const double a0 = ws[j * n + l], b0 = wd[j * n + l], a1 = ws[(j + 1) * n + l], b1 = wd[(j + 1) * n + l];
+                V sa, sb, da, db;
+                load(sa, &S[l * nz + i0]);
+                load(sb, &S[l * nz + i0 + 4]);
+                load(da, &D[l * nz + i0]);
+                load(db, &D[l * nz + i0 + 4]);
+                V p = a0 * sa, q = b0 * da;
+                u0a += p + q;
+                d0a += p - q;
+                p = a0 * sb;
+                q = b0 * db;
+                u0b += p + q;
+                d0b += p - q;
+                p = a1 * sa;
+                q = b1 * da;
+                u1a += p + q;
+                d1a += p - q;
+                p = a1 * sb;
+                q = b1 * db;
+                u1b += p + q;
+                d1b += p - q;
+            }
+            store(&g[j * nz + i0], u0a);
+            store(&g[j * nz + i0 + 4], u0b);
+            store(&g[(j + n) * nz + i0], d0a);
+            store(&g[(j + n) * nz + i0 + 4], d0b);
+            store(&g[(j + 1) * nz + i0], u1a);
+            store(&g[(j + 1) * nz + i0 + 4], u1b);
+            store(&g[(j + 1 + n) * nz + i0], d1a);
+            store(&g[(j + 1 + n) * nz + i0 + 4], d1b);
+        }
+        one(j, i0, nz - i0);
+        one(j + 1, i0, nz - i0);
+    }
+    if (j < n) one(j, 0, nz);
+}
+
 }  // namespace
 
 void fibre_phase_modes(double sigma, double nu_in, double nu, int count, double* out) {
@@ -362,21 +433,7 @@ SheenVolumeLayer::SheenVolumeLayer(double alpha, const SheenVolumeOptions& optio
             vs[k] = v[k] + v[n * nz + k];
             vd[k] = v[k] - v[n * nz + k];
         }
-        std::fill(g.begin(), g.end(), 0.0);
-        for (std::size_t j = 0; j < n; ++j) {
-            double* Gu = &g[j * nz];
-            double* Gd = &g[(j + n) * nz];
-            for (std::size_t l = 0; l < n; ++l) {
-                const double ws = sys.sum_ab[j * n + l], wd = sys.diff_ab[j * n + l];
-                const double* S = &vs[l * nz];
-                const double* D = &vd[l * nz];
-                for (std::size_t i = 0; i < nz; ++i) {
-                    const double p = ws * S[i], q = wd * D[i];
-                    Gu[i] += p + q;
-                    Gd[i] += p - q;
-                }
-            }
-        }
+        scatter_source(sys.sum_ab.data(), sys.diff_ab.data(), vs.data(), vd.data(), g.data(), n, nz);
     };
     auto dotp = [](const std::vector<double>& x, const std::vector<double>& y) {
         double sum = 0.0;
