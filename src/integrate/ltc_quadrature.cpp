@@ -261,7 +261,7 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
     e.push_back(Vec3{0, 0, 1});
     const Vec3 t1 = f.t1();
     const Vec3 y{0, 1, 0};
-    std::vector<double> breaks{0.0, kTwoPi};
+    std::vector<double> breaks;
     auto add_break = [&](const Vec3& v) {
         double phi = f.phi_of_azimuth(std::atan2(dot(v, y), dot(v, t1)));
         if (phi < 0.0) phi += kTwoPi;
@@ -288,10 +288,15 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
             kinks.push_back(v);
             add_break(v);
         }
+    // The azimuth runs once round from the first break (every polygon has
+    // vertices, so there is one): the panels between breaks, adapted as one
+    // integral with one error budget.
     std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    breaks.push_back(breaks.front() + kTwoPi);
     AdaptiveOptions outer;
-    outer.abs_tol = 0.5 * abs_tol / static_cast<double>(breaks.size() - 1);
-    outer.max_intervals = 200;
+    outer.abs_tol = 0.5 * abs_tol;
+    outer.max_intervals = 400;
     AdaptiveOptions inner;
     inner.abs_tol = 0.5 * abs_tol / kTwoPi;
     inner.max_intervals = 100;
@@ -325,12 +330,15 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
             }
         }
         std::sort(cuts.begin(), cuts.end());
+        // A ray far from a kink (or short) is smooth: one panel that meets
+        // the tolerance is kept; otherwise the ray starts again cut at them.
+        if (cuts.size() > 2) {
+            const detail::Interval<1> whole = detail::kronrod_panel<1>(g, 0.0, 1.0, 1);
+            if (whole.error[0] <= inner.abs_tol) return whole.value;
+        }
         return integrate_adaptive_breaks<1>(g, cuts.data(), cuts.size(), inner).value;
     };
-    double sum = 0.0;
-    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
-        if (breaks[k + 1] > breaks[k]) sum += integrate_adaptive<1>(ray, breaks[k], breaks[k + 1], outer).value[0];
-    return sum;
+    return integrate_adaptive_breaks<1>(ray, breaks.data(), breaks.size(), outer).value[0];
 }
 
 }  // namespace brdflut::ltc_detail
