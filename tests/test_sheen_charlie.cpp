@@ -283,6 +283,29 @@ TEST(SheenCharlieLtc, NormTableTakesTheFitsNormOnlyWhenItsEstimateMeetsTheTables
     }
 }
 
+// The LTC norms of the Charlie lobe are its own moments over the half
+// vector (sheen_charlie_moments, bit for bit), and agree with the generic
+// path's split sums within both estimates, at every shadowing.
+TEST(SheenCharlieLtc, NormsTakeTheHalfVectorRouteAndAgreeWithTheGenericPath) {
+    for (SheenShadowing sh : {SheenShadowing::estevez_kulla, SheenShadowing::estevez_kulla_soft, SheenShadowing::neubelt})
+        for (double alpha : {0.004, 0.3, 1.0})
+            for (double mu : {0.02, 0.5, 0.95}) {
+                const LtcLobe lobe(std::make_shared<const CharlieLobe>(alpha, sh), mu, alpha, 7, 1e-9);
+                const LtcNorms n = ltc_norms(lobe);
+                const Estimate<2> hv = sheen_charlie_moments(mu, alpha, sh, 1e-9);
+                EXPECT_EQ(n.n0, hv.value[0]);
+                EXPECT_EQ(n.n1, hv.value[1]);
+                EXPECT_EQ(n.n0_error, hv.error[0]);
+                GenericOptions opt;
+                opt.abs_tol = 1e-9;
+                const Estimate<2> g = generic_moments<2>(CharlieLobe(alpha, sh), mu, kSplitSumWeights, opt);
+                EXPECT_NEAR(n.n0, g.value[0] + g.value[1], n.n0_error + g.error[0] + g.error[1])
+                    << to_string(sh) << " alpha " << alpha << " mu " << mu;
+                EXPECT_NEAR(n.n1, g.value[1], n.n1_error + g.error[1]) << to_string(sh) << " alpha " << alpha << " mu " << mu;
+                EXPECT_LE(n.n0_error, 1e-9);
+            }
+}
+
 TEST(SheenCharlieLtc, HeitzLayoutLayerFitsTheSameLobeOnLtc1sGridAndIsTheSameForAnyThreadCount) {
     // The norm is the lobe's albedo: sheen_charlie_moments E at alpha = r^2.
     const PreparedTable norm = find_table("ltc_sheen_charlie_ek_norm").prepare(

@@ -74,6 +74,8 @@ public:
     // of normals drawn from D cos(theta_m) (sheen.h's sampler).
     bool has_sampler() const override { return true; }
     LobeSample sample(const Vec3& wo, double u1, double u2) const override;
+    // sheen_charlie_moments, over the half vector.
+    bool own_moments(double mu_o, double abs_tol, Estimate<2>& out) const override;
     double alpha() const { return charlie_.alpha; }
     SheenShadowing shadowing() const { return shadowing_; }
 

@@ -161,6 +161,12 @@ public:
     // wherever f is, so that the Monte Carlo estimate is unbiased.
     virtual bool has_sampler() const { return false; }
     virtual LobeSample sample(const Vec3& /*wo*/, double /*u1*/, double /*u2*/) const { return {}; }
+    // The albedo and the Fresnel moment, {int f cos(theta_i) dw_i, int f (1 -
+    // wo.h)^5 cos(theta_i) dw_i}, each to abs_tol, by a route of the lobe's
+    // own that is cheaper than the generic path (optional; the LTC norms,
+    // ltc_norms, take it). The generic path never does: it stays an
+    // independent check of the route.
+    virtual bool own_moments(double /*mu_o*/, double /*abs_tol*/, Estimate<2>& /*out*/) const { return false; }
 };
 
 // A term of f that is a pure function of a roughness and a cosine, such as

@@ -453,7 +453,16 @@ LtcNorms ltc_norms(const LtcLobe& lobe) {
                 n.n1_error = lobe.known_n1_error;
                 break;
             }
-            // The split sums {A, B}: n0 = A + B, n1 = B.
+            // The lobe's own route to {n0, n1}, else the split sums {A, B}
+            // of the generic path: n0 = A + B, n1 = B.
+            Estimate<2> own;
+            if (lobe.generic->own_moments(lobe.mu_o, lobe.norm_tolerance, own)) {
+                n.n0 = own.value[0];
+                n.n1 = own.value[1];
+                n.n0_error = own.error[0];
+                n.n1_error = own.error[1];
+                break;
+            }
             GenericOptions opt;
             opt.abs_tol = lobe.norm_tolerance;
             const Estimate<2> e = generic_moments<2>(*lobe.generic, lobe.mu_o, kSplitSumWeights, opt);

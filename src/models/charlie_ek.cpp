@@ -75,6 +75,11 @@ LobeHints CharlieLobe::hints(const Vec3& wo) const {
     return h;
 }
 
+bool CharlieLobe::own_moments(double mu_o, double abs_tol, Estimate<2>& out) const {
+    out = sheen_charlie_moments(mu_o, charlie_.alpha, shadowing_, abs_tol);
+    return true;
+}
+
 LobeSample CharlieLobe::sample(const Vec3& wo, double u1, double u2) const {
     return cosine_and_mirror_mixture(
         wo, u1, u2,

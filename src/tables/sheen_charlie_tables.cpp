@@ -372,7 +372,7 @@ void set_charlie_ek_lobe(LtcLayer& layer, double min_alpha, const std::string& r
         m["roughness"] = roughness;
         return m;
     };
-    layer.norms_rule = "n0 by the generic lobe path (as sheen_charlie_moments E, to 1e-8)";
+    layer.norms_rule = "n0 = sheen_charlie_moments E (over the half vector), to 1e-8";
     const std::uint64_t key = ltc_lobe_key("charlie_estevez_kulla");
     layer.lobe = [key, min_alpha](double r, double mu, const std::map<std::string, std::string>&) {
         const double alpha = std::max(alpha_from_perceptual(r), min_alpha);
