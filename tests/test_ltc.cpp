@@ -495,6 +495,49 @@ TEST(LtcLights, ExactLightsOfQuadrantsTilingTheHemisphereAddUpToTheAlbedo) {
     }
 }
 
+// A light that is its own mirror image in the plane of incidence is taken
+// as twice its half (phi in [0, pi]); cut along that plane into two quads
+// that are not, each taken once round, the two halves give the same light
+// within the tolerance. Every lobe kind, and each mirrored light of the
+// report's bank, from grazing to normal view.
+TEST(LtcLights, MirroredLightsAreTwiceTheirHalfAndAgreeWithTheTwoHalvesOnceRound) {
+    auto unit = [](const Vec3& v) {
+        const double l = std::sqrt(dot(v, v));
+        return Vec3{v.x / l, v.y / l, v.z / l};
+    };
+    auto mid = [&](const Vec3& a, const Vec3& b) { return unit(Vec3{a.x + b.x, a.y + b.y, a.z + b.z}); };
+    int mirrored_lights = 0;
+    for (double mu : {0.03, 0.5, 0.97})
+        for (double alpha : {0.1, 0.6}) {
+            std::vector<LtcLobe> lobes;
+            lobes.emplace_back(mu, alpha, Visibility::height_correlated);
+            lobes.emplace_back(std::make_shared<const CharlieLobe>(alpha, SheenShadowing::estevez_kulla), mu, alpha, 1,
+                               1e-10);
+            lobes.emplace_back(std::make_shared<const ZeltnerApproxSheenLobe>(alpha), mu, alpha, 2, 1e-10);
+            for (const LtcLobe& lobe : lobes) {
+                const double n0 = ltc_norms(lobe).n0;
+                const ltc_detail::Setup s = ltc_detail::make_setup(lobe, n0, 28, 16);
+                for (const LtcLight& l : ltc_light_bank(mu)) {
+                    const auto& v = l.vertices;
+                    // The square's edges v1 v2 and v3 v0 cross the plane y = 0
+                    // at their midpoints when the square is mirrored.
+                    const Vec3 a = mid(v[1], v[2]), b = mid(v[3], v[0]);
+                    if (!(std::abs(a.y) < 1e-12 && std::abs(b.y) < 1e-12)) continue;
+                    ++mirrored_lights;
+                    const LtcLight lower{"lower half", {v[0], v[1], a, b}}, upper{"upper half", {b, a, v[2], v[3]}};
+                    const double tol = 1e-7 * n0;
+                    const double whole = ltc_detail::polygon_light(lobe, s.frame, l, tol);
+                    const double halves = ltc_detail::polygon_light(lobe, s.frame, lower, tol) +
+                                          ltc_detail::polygon_light(lobe, s.frame, upper, tol);
+                    EXPECT_NEAR(whole, halves, 3.0 * tol) << l.name << ", " << to_string(lobe.kind) << " alpha " << alpha
+                                                          << " mu " << mu;
+                    EXPECT_GT(whole, 0.0) << l.name;
+                }
+            }
+        }
+    EXPECT_EQ(mirrored_lights, 3 * 2 * 3 * 8);  // 8 of the bank's 10 lights are centred in the plane
+}
+
 TEST(LtcLights, FitBankIsItsOwnAndStraddlesTheHorizonAtGrazingView) {
     for (double mu : {kLtcMinMu, 0.2, 0.39}) {
         const std::vector<LtcLight> fit = ltc_fit_light_bank(mu), report = ltc_light_bank(mu);

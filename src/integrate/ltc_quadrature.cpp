@@ -288,14 +288,33 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
             kinks.push_back(v);
             add_break(v);
         }
-    // The azimuth runs once round from the first break (every polygon has
-    // vertices, so there is one): the panels between breaks, adapted as one
-    // integral with one error budget.
+    // The lobe is symmetric about the plane of incidence (an isotropic BRDF
+    // with wo in the x-z plane; the LTC's form assumes it too), and so is
+    // the frame: the ray at -phi is the mirror image of the ray at phi. A
+    // polygon that is its own mirror image (a light centred in the plane)
+    // then has twice the light of its half phi in [0, pi]. Otherwise the
+    // azimuth runs once round from the first break (every polygon has
+    // vertices, so there is one). The panels between breaks are adapted as
+    // one integral with one error budget.
+    bool mirrored = true;
+    for (const Vec3& v : light.vertices) {
+        bool found = false;
+        for (const Vec3& w : light.vertices)
+            found = found || (std::abs(w.x - v.x) <= 1e-12 && std::abs(w.y + v.y) <= 1e-12 && std::abs(w.z - v.z) <= 1e-12);
+        mirrored = mirrored && found;
+    }
+    if (mirrored) {
+        breaks.erase(std::remove_if(breaks.begin(), breaks.end(), [](double b) { return !(b > 0.0 && b < kPi); }),
+                     breaks.end());
+        breaks.push_back(0.0);
+        breaks.push_back(kPi);
+    }
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-    breaks.push_back(breaks.front() + kTwoPi);
+    if (!mirrored) breaks.push_back(breaks.front() + kTwoPi);
+    const double copies = mirrored ? 2.0 : 1.0;
     AdaptiveOptions outer;
-    outer.abs_tol = 0.5 * abs_tol;
+    outer.abs_tol = 0.5 * abs_tol / copies;
     outer.max_intervals = 400;
     AdaptiveOptions inner;
     inner.abs_tol = 0.5 * abs_tol / kTwoPi;
@@ -338,7 +357,7 @@ double polygon_light(const LtcLobe& lobe, const LobeFrame& f, const LtcLight& li
         }
         return integrate_adaptive_breaks<1>(g, cuts.data(), cuts.size(), inner).value;
     };
-    return integrate_adaptive_breaks<1>(ray, breaks.data(), breaks.size(), outer).value[0];
+    return copies * integrate_adaptive_breaks<1>(ray, breaks.data(), breaks.size(), outer).value[0];
 }
 
 }  // namespace brdflut::ltc_detail

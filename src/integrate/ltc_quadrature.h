@@ -162,8 +162,10 @@ double below_horizon_of(const LtcInverse& minv);
 // The exact light of one convex polygon: in the lobe's polar coordinates,
 // each ray phi crosses the polygon's cone (and the upper hemisphere) in
 // one interval of beta, integrated in u by adaptive Gauss-Kronrod; phi by
-// adaptive Gauss-Kronrod over one turn, from panels between the vertices'
-// azimuths and those of the lobe's point kinks (LtcLobe::point_kinks). A
+// adaptive Gauss-Kronrod over one turn (half a turn, doubled, for a polygon
+// that is its own mirror image in the plane of incidence), from panels
+// between the vertices' azimuths and those of the lobe's point kinks
+// (LtcLobe::point_kinks). A
 // ray that one panel does not resolve is cut where it passes closest to a
 // point kink, and a ray that the horizon ends is integrated in
 // w, u = u1 - (u1 - u0)(1 - w)^2, flat at the horizon, where a shadowing
