@@ -260,6 +260,7 @@ TEST(SheenCharlieLtc, NormTableTakesTheFitsNormOnlyWhenItsEstimateMeetsTheTables
     const TableDefinition& matrix = find_table("ltc_sheen_charlie_ek");
     TableSettings reference = default_settings(def);
     reference.quality = Quality::reference;
+    int refined = 0;
     for (bool fit_first : {false, true}) {
         clear_shared_results();
         const PreparedTable norm = def.prepare(default_settings(def));
@@ -276,11 +277,18 @@ TEST(SheenCharlieLtc, NormTableTakesTheFitsNormOnlyWhenItsEstimateMeetsTheTables
                 EXPECT_EQ(v.value[0], own.n0) << r << " " << mu;
                 EXPECT_EQ(v.error[0], own.n0_error);
                 const TexelValue f = fine.evaluator->evaluate(at, 0);
-                EXPECT_NE(f.value[0], own.n0) << "reference quality integrates again";
+                // Reference quality integrates again: where the fits' n0 does
+                // not meet its tolerance, its value is not that n0 (where it
+                // does, the same first panels may give the same bits).
+                if (own.n0_error > 0.01 * lobe.norm_tolerance) {
+                    ++refined;
+                    EXPECT_NE(f.value[0], own.n0) << "reference quality integrates again";
+                }
                 EXPECT_LE(f.error[0], 0.01 * lobe.norm_tolerance);
                 EXPECT_NEAR(f.value[0], v.value[0], v.error[0] + f.error[0]);
             }
     }
+    EXPECT_GT(refined, 0);
 }
 
 // The LTC norms of the Charlie lobe are its own moments over the half

@@ -306,46 +306,46 @@ Estimate<2> sheen_charlie_moments(double mu_o, double alpha, SheenShadowing shad
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     const double scale = kInvPi;  // E = (1/pi) integral over v of the azimuth integral over [0, pi]
     const std::size_t pieces = breaks.size() - 1;
+    // Piece k of the breaks is s in [k, k + 1]: one adaptive integral over
+    // all of them with one error budget.
     AdaptiveOptions opt;
-    opt.abs_tol = 0.5 * abs_tol / scale / static_cast<double>(std::max<std::size_t>(pieces, 1));
+    opt.abs_tol = 0.5 * abs_tol / scale;
     opt.controlled = 2;
-    std::array<double, 2> value{}, error{};
-    double inner_error = 0.0;
-    for (std::size_t k = 0; k < pieces; ++k) {
-        const double b0 = breaks[k], b1 = breaks[k + 1];
-        if (!(b1 > b0)) continue;
-        const bool flat_start = k == 0, flat_end = b1 == 0.5 * kPi;
-        const double z0 = std::log(b0), len = std::log(b1) - z0;
-        const Estimate<3> e = integrate_adaptive<3>(
-            [&](double s) -> std::array<double, 3> {
-                // s -> [0, 1]: 1 - (1 - s)^3 at the pole (EndMap), then
-                // s^4 at the start (the whole ring at the horizon).
-                const std::array<double, 2> m = EndMap{false, flat_end}(s);
-                double x = m[0], dx = m[1];
-                if (flat_start) {
-                    const double x3 = x * x * x;
-                    dx *= kClipPower * x3;
-                    x *= x3;
-                }
-                const HalfVectorAxis::Node node = axis.at(std::exp(z0 + len * x));
-                const double weight = node.weight * len * dx;
-                if (!(weight > 0.0)) return {0.0, 0.0, 0.0};
-                const std::array<double, 3> f = ring(node.u, node.c, 0.05 * opt.abs_tol / weight);
-                return {f[0] * weight, f[1] * weight, f[2] * weight};
-            },
-            0.0, 1.0, opt);
-        for (std::size_t i = 0; i < 2; ++i) {
-            value[i] += e.value[i];
-            error[i] += e.error[i];
-        }
-        inner_error += e.value[2] + e.error[2];
-    }
+    opt.max_intervals = 200 * static_cast<int>(std::max<std::size_t>(pieces, 1));
+    const double ring_tol = 0.05 * opt.abs_tol / static_cast<double>(std::max<std::size_t>(pieces, 1));
+    std::vector<double> ends;
+    for (std::size_t k = 0; k <= pieces && pieces > 0; ++k) ends.push_back(static_cast<double>(k));
+    const Estimate<3> e = integrate_adaptive_breaks<3>(
+        [&](double sk) -> std::array<double, 3> {
+            const std::size_t k = std::min(static_cast<std::size_t>(sk), pieces - 1);
+            const double s = sk - static_cast<double>(k);
+            const double b0 = breaks[k], b1 = breaks[k + 1];
+            if (!(b1 > b0)) return {0.0, 0.0, 0.0};
+            const bool flat_start = k == 0, flat_end = b1 == 0.5 * kPi;
+            const double z0 = std::log(b0), len = std::log(b1) - z0;
+            // s -> [0, 1]: 1 - (1 - s)^3 at the pole (EndMap), then
+            // s^4 at the start (the whole ring at the horizon).
+            const std::array<double, 2> m = EndMap{false, flat_end}(s);
+            double x = m[0], dx = m[1];
+            if (flat_start) {
+                const double x3 = x * x * x;
+                dx *= kClipPower * x3;
+                x *= x3;
+            }
+            const HalfVectorAxis::Node node = axis.at(std::exp(z0 + len * x));
+            const double weight = node.weight * len * dx;
+            if (!(weight > 0.0)) return {0.0, 0.0, 0.0};
+            const std::array<double, 3> f = ring(node.u, node.c, ring_tol / weight);
+            return {f[0] * weight, f[1] * weight, f[2] * weight};
+        },
+        ends.data(), ends.size(), opt);
+    const double inner_error = e.value[2] + e.error[2];
     // The neglected tail above beta_hi: dv below e^-span times the largest
     // weight, g <= 4 V mu_i / c <= 1 / (mu_o c), c >= sin(beta_hi).
     const double tail = kPi * axis.tail(1.0 / mu_o);
     for (std::size_t i = 0; i < 2; ++i) {
-        out.value[i] = value[i] * scale;
-        out.error[i] = (error[i] + inner_error + tail) * scale + 1e-16;
+        out.value[i] = e.value[i] * scale;
+        out.error[i] = (e.error[i] + inner_error + tail) * scale + 1e-16;
     }
     out.evaluations = evaluations;
     return out;
