@@ -678,27 +678,54 @@ BRDFLUT_WIDEST_CLONES void multiply(const std::vector<double>& A, const std::vec
 }
 
 // Solves X Z = Y in place (Y becomes Z; X its LU factors), partial pivoting.
+// X's lower part holds the multipliers (L), moved with their rows by the
+// later swaps; Y is then permuted and reduced row by row, each Y[i][j] less
+// L[i][k] Y[k][j] over k in order (the terms and order of eliminating Y
+// alongside X), sixteen columns at a time held in registers across k.
 BRDFLUT_WIDEST_CLONES void solve(std::vector<double>& X, std::vector<double>& Y, std::size_t n) {
+    constexpr std::size_t kColumns = 16;
+    std::vector<std::size_t> pivot(n);
     for (std::size_t k = 0; k < n; ++k) {
         std::size_t p = k;
         for (std::size_t i = k + 1; i < n; ++i)
             if (std::abs(X[i * n + k]) > std::abs(X[p * n + k])) p = i;
         if (X[p * n + k] == 0.0) throw Error("sheen volume: singular doubling step");
+        pivot[k] = p;
         if (p != k)
-            for (std::size_t j = 0; j < n; ++j) {
-                std::swap(X[p * n + j], X[k * n + j]);
-                std::swap(Y[p * n + j], Y[k * n + j]);
-            }
+            for (std::size_t j = 0; j < n; ++j) std::swap(X[p * n + j], X[k * n + j]);
         for (std::size_t i = k + 1; i < n; ++i) {
             const double f = X[i * n + k] / X[k * n + k];
+            X[i * n + k] = f;
             if (f == 0.0) continue;
-            for (std::size_t j = k; j < n; ++j) X[i * n + j] -= f * X[k * n + j];
-            for (std::size_t j = 0; j < n; ++j) Y[i * n + j] -= f * Y[k * n + j];
+            for (std::size_t j = k + 1; j < n; ++j) X[i * n + j] -= f * X[k * n + j];
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        if (pivot[k] != k)
+            for (std::size_t j = 0; j < n; ++j) std::swap(Y[pivot[k] * n + j], Y[k * n + j]);
+    for (std::size_t i = 1; i < n; ++i) {
+        const double* l = &X[i * n];
+        double* y = &Y[i * n];
+        std::size_t j0 = 0;
+        for (; j0 + kColumns <= n; j0 += kColumns) {
+            double v[kColumns];
+            for (std::size_t q = 0; q < kColumns; ++q) v[q] = y[j0 + q];
+            for (std::size_t k = 0; k < i; ++k) {
+                if (l[k] == 0.0) continue;
+                const double* yk = &Y[k * n + j0];
+                for (std::size_t q = 0; q < kColumns; ++q) v[q] -= l[k] * yk[q];
+            }
+            for (std::size_t q = 0; q < kColumns; ++q) y[j0 + q] = v[q];
+        }
+        for (std::size_t j = j0; j < n; ++j) {
+            double v = y[j];
+            for (std::size_t k = 0; k < i; ++k)
+                if (l[k] != 0.0) v -= l[k] * Y[k * n + j];
+            y[j] = v;
         }
     }
     // Back substitution, each Y[k][j] less X[k][i] Y[i][j] over i in order,
     // sixteen columns at a time held in registers across i.
-    constexpr std::size_t kColumns = 16;
     for (std::size_t k = n; k-- > 0;) {
         const double* x = &X[k * n];
         double* y = &Y[k * n];
