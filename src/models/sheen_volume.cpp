@@ -234,38 +234,29 @@ BRDFLUT_WIDEST_CLONES void scatter_source(const double* ws, const double* wd, co
     for (; j + 2 <= n; j += 2) {
         std::size_t i0 = 0;
         for (; i0 + 8 <= nz; i0 += 8) {
-            V u0a{}, u0b{}, d0a{}, d0b{}, u1a{}, u1b{}, d1a{}, d1b{};
+            // [ordinate of the pair][four depths]: the sums into g's up and
+            // down rows.
+            V up[2][2]{}, down[2][2]{};
             for (std::size_t l = 0; l < n; ++l) {
-                const double a0 = ws[j * n + l], b0 = wd[j * n + l], a1 = ws[(j + 1) * n + l], b1 = wd[(j + 1) * n + l];
-                V sa, sb, da, db;
-                load(sa, &S[l * nz + i0]);
-                load(sb, &S[l * nz + i0 + 4]);
-                load(da, &D[l * nz + i0]);
-                load(db, &D[l * nz + i0 + 4]);
-                V p = a0 * sa, q = b0 * da;
-                u0a += p + q;
-                d0a += p - q;
-                p = a0 * sb;
-                q = b0 * db;
-                u0b += p + q;
-                d0b += p - q;
-                p = a1 * sa;
-                q = b1 * da;
-                u1a += p + q;
-                d1a += p - q;
-                p = a1 * sb;
-                q = b1 * db;
-                u1b += p + q;
-                d1b += p - q;
+                V sv[2], dv[2];
+                for (std::size_t h = 0; h < 2; ++h) {
+                    load(sv[h], &S[l * nz + i0 + 4 * h]);
+                    load(dv[h], &D[l * nz + i0 + 4 * h]);
+                }
+                for (std::size_t o = 0; o < 2; ++o) {
+                    const double a = ws[(j + o) * n + l], b = wd[(j + o) * n + l];
+                    for (std::size_t h = 0; h < 2; ++h) {
+                        const V p = a * sv[h], q = b * dv[h];
+                        up[o][h] += p + q;
+                        down[o][h] += p - q;
+                    }
+                }
             }
-            store(&g[j * nz + i0], u0a);
-            store(&g[j * nz + i0 + 4], u0b);
-            store(&g[(j + n) * nz + i0], d0a);
-            store(&g[(j + n) * nz + i0 + 4], d0b);
-            store(&g[(j + 1) * nz + i0], u1a);
-            store(&g[(j + 1) * nz + i0 + 4], u1b);
-            store(&g[(j + 1 + n) * nz + i0], d1a);
-            store(&g[(j + 1 + n) * nz + i0 + 4], d1b);
+            for (std::size_t o = 0; o < 2; ++o)
+                for (std::size_t h = 0; h < 2; ++h) {
+                    store(&g[(j + o) * nz + i0 + 4 * h], up[o][h]);
+                    store(&g[(j + o + n) * nz + i0 + 4 * h], down[o][h]);
+                }
         }
         one(j, i0, nz - i0);
         one(j + 1, i0, nz - i0);
